@@ -1,0 +1,37 @@
+// device/model/printer_model.h: what a printer is: heads, inks, resolution, buffer and speeds.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace tp::device {
+
+/// One ink channel of the printer ("cyan"), in the order channels travel in a swath.
+struct InkChannel {
+  std::string name;
+  double head_offset_x_mm = 0;   ///< offset of this ink's nozzle row from the carriage origin
+};
+
+/// A printer model, as the host plans swaths for it and the simulator emulates it.
+struct PrinterModel {
+  std::string name = "tp-sim-1600";
+  std::uint16_t usb_vendor_id = 0x1d6b;     ///< overridden per real device
+  std::uint16_t usb_product_id = 0x0104;
+  std::string ieee1284_id = "MFG:TextilePrint;MDL:TP-SIM-1600;CMD:TPWP;CLS:PRINTER;";
+
+  std::vector<InkChannel> inks{{"cyan"}, {"magenta"}, {"yellow"}, {"black"}};
+  int dpi_x = 600;                 ///< native resolution across the fabric
+  int dpi_y = 600;                 ///< native resolution along the feed
+  int nozzles_per_ink = 1280;      ///< nozzles in one ink's row
+  int nozzle_pitch_rows = 1;       ///< nozzle spacing in print rows at dpi_y
+  int bits_per_pixel = 2;          ///< drop levels: 2 bits = none/small/medium/large
+  double print_width_mm = 1650;    ///< widest printable fabric
+  std::uint32_t swath_buffer_bytes = 64u << 20;  ///< printer memory for swaths awaiting printing
+  std::uint16_t swath_buffer_slots = 8;          ///< swaths the printer can hold at once
+  double carriage_speed_mm_s = 1500;
+  double feed_speed_mm_s = 200;
+  std::uint16_t protocol_version = 1;
+};
+
+}  // namespace tp::device

@@ -1,0 +1,54 @@
+# scripts/lib.sh: shared by scripts/demo and scripts/test: install what is missing, build.
+# Sourced, not run. Idempotent: a second run skips packages present and rebuilds incrementally.
+
+TP_ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+TP_BUILD=${TP_BUILD:-$TP_ROOT/build}
+TP_JOBS=${TP_JOBS:-$(nproc)}
+
+# Debian 12 packages the project builds, tests and demos with.
+TP_PACKAGES=(
+  build-essential cmake ninja-build pkg-config git
+  libusb-1.0-0-dev libgpiod-dev gpiod usbutils
+  libopenimageio-dev openimageio-tools
+  libcgal-dev libeigen3-dev libopenmesh-dev
+  libspdlog-dev nlohmann-json3-dev libcli11-dev libsqlite3-dev sqlite3 libzip-dev zlib1g-dev
+  liblcms2-dev icc-profiles-free colord-data libgs10-common ghostscript
+  libgtest-dev libgmock-dev libbenchmark-dev
+  libumockdev-dev umockdev
+  clang libclang-rt-14-dev
+)
+
+tp_log() { printf '\033[1m==> %s\033[0m\n' "$*" >&2; }
+
+# Runs a command as root: directly when root, through sudo otherwise.
+tp_as_root() {
+  if [ "$(id -u)" -eq 0 ]; then "$@"
+  elif command -v sudo >/dev/null 2>&1; then sudo "$@"
+  else echo "error: need root (or sudo) to run: $*" >&2; return 1
+  fi
+}
+
+# Installs the packages that are not installed yet; does nothing when all are there.
+tp_install_deps() {
+  local missing=()
+  for p in "${TP_PACKAGES[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+  done
+  if [ ${#missing[@]} -eq 0 ]; then
+    tp_log "packages: all ${#TP_PACKAGES[@]} present"
+    return 0
+  fi
+  tp_log "packages: installing ${missing[*]}"
+  tp_as_root env DEBIAN_FRONTEND=noninteractive apt-get update -q
+  tp_as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends "${missing[@]}"
+}
+
+# Configures (once) and builds everything into $TP_BUILD (executables in $TP_BUILD/bin).
+tp_build() {
+  if [ ! -f "$TP_BUILD/build.ninja" ]; then
+    tp_log "configure: $TP_BUILD"
+    cmake -S "$TP_ROOT" -B "$TP_BUILD" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo
+  fi
+  tp_log "build: $TP_JOBS jobs"
+  cmake --build "$TP_BUILD" -j "$TP_JOBS"
+}
