@@ -1,0 +1,118 @@
+// host/job/job.h: a garment job as the host understands it, after its manifest is validated.
+//
+// Lengths are millimetres (the manifest may say "1 cm" or "0.5 in"; intake converts). Asset
+// paths are absolute paths inside the job package, already checked to stay inside it.
+#pragma once
+
+#include <array>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace tp::host {
+
+/// Where the garment comes from.
+struct GarmentSpec {
+  std::optional<std::filesystem::path> pattern;       ///< pattern file (native JSON, GarmentCode, SVG, DXF)
+  std::string pattern_format = "auto";
+  std::optional<std::filesystem::path> garment_mesh;  ///< OBJ garment whose UVs are the pieces, in mm
+  std::string sample;                                 ///< project sample garment ("skirt8"), if no file
+  std::string size = "M";
+  /// Body: a dress form from measurements, or a mesh file with its units, or none (flat job).
+  std::string body_kind = "none";                     ///< "none", "dress_form", "mesh"
+  std::vector<std::pair<std::string, double>> dress_form_mm;  ///< measurement name -> mm
+  std::optional<std::filesystem::path> body_mesh;
+  double body_mesh_scale_to_mm = 1.0;
+  std::string stitches = "pattern";                   ///< "pattern", "suggest"
+  double mesh_edge_mm = 15;                           ///< target triangle edge length
+};
+
+/// One layer of the print design (units mm, directions unit-free).
+struct DesignLayerSpec {
+  std::string type;                                   ///< "planar", "cylindrical", "stroke", "texture"
+  std::string name;
+  double opacity = 1.0;
+  std::optional<std::filesystem::path> image;         ///< image file
+  std::string procedural;                             ///< or a procedural texture: "marbling", "stripes", ...
+  int procedural_seed = 1;
+  int procedural_size_px = 1024;
+  std::array<double, 3> centre_mm{0, 0, 0};
+  std::array<double, 3> normal{0, 0, 1};
+  std::array<double, 3> up{0, 1, 0};
+  double width_mm = 0;
+  double height_mm = 0;
+  bool repeat = false;
+  std::optional<std::array<double, 3>> axis_origin_mm;
+  std::optional<std::array<double, 3>> axis_direction;
+  double tile_width_mm = 0;
+  double tile_height_mm = 0;
+  double rotation_deg = 0;
+  std::array<double, 2> offset_mm{0, 0};
+  std::vector<std::array<double, 3>> points_mm;       ///< stroke polyline
+  double radius_mm = 5;
+  std::array<int, 4> colour_rgba{0, 0, 0, 255};
+  double hardness = 0.8;
+  std::optional<std::filesystem::path> mesh;          ///< texture transfer: textured OBJ
+};
+
+/// Per-edge allowance override.
+struct EdgeAllowance {
+  std::string piece;
+  std::string edge;
+  double allowance_mm = 0;
+};
+
+struct FinishingSpec {
+  double seam_allowance_mm = 10;
+  double hem_allowance_mm = 20;
+  std::vector<EdgeAllowance> edges;
+  std::string corner_style = "mitre";                 ///< "mitre", "square", "mirror"
+  bool notches = true;
+  std::string labels = "inside";                      ///< "inside", "separate", "none"
+  bool grain_line = true;
+};
+
+struct DefectZone {
+  double x_mm = 0, y_mm = 0, width_mm = 0, length_mm = 0;
+};
+
+struct MarkerSpec {
+  double fabric_width_mm = 1500;
+  double gap_mm = 4;
+  double edge_margin_mm = 10;
+  std::string rotations = "grain";                    ///< "grain" (0/180), "90", "free", "fixed"
+  bool mirror = false;
+  double time_limit_s = 5;
+  int seed = 1;
+  std::optional<double> max_length_mm;
+  std::vector<DefectZone> defects;
+};
+
+struct PrintSpec {
+  std::string printer = "sim";                        ///< "sim" (printsim) or "usb"
+  std::optional<std::filesystem::path> printer_model; ///< printer description file; built-in if absent
+  int dpi = 600;
+  int passes = 1;
+  bool bidirectional = false;
+  std::string screen = "blue-noise";                  ///< "blue-noise", "error-diffusion"
+  int levels = 4;                                     ///< drop levels incl. none: 2 or 4
+  std::optional<std::filesystem::path> icc_profile;
+  double ink_limit_pct = 280;
+  bool separations_tiff = false;
+  int preview_dpi = 50;
+};
+
+/// A validated job.
+struct Job {
+  std::string name;
+  std::filesystem::path package_root;                 ///< folder holding job.json and its assets
+  std::filesystem::path manifest;                     ///< .../job.json
+  GarmentSpec garment;
+  std::vector<DesignLayerSpec> design;
+  FinishingSpec finishing;
+  MarkerSpec marker;
+  PrintSpec print;
+};
+
+}  // namespace tp::host

@@ -1,0 +1,262 @@
+// host/job/manifest.cpp: job.json schema: every field typed, ranged, unit-checked and located.
+#include "host/job/manifest.h"
+
+#include <fstream>
+#include <sstream>
+
+#include "host/job/internal/field_reader.h"
+
+namespace tp::host {
+
+namespace fs = std::filesystem;
+using internal::FieldReader;
+using internal::Problems;
+
+namespace {
+
+constexpr double kMaxLengthMm = 100000.0;  // 100 m: longer than any marker or garment
+
+// Resolves an asset field into `out` (reporting unsafe or missing files as problems).
+void read_asset(FieldReader& r, const std::string& key, bool required, const JobPackage* pkg,
+                std::optional<fs::path>& out) {
+  auto rel = r.string(key, required);
+  if (!rel) return;
+  if (!pkg) {
+    out = fs::path(*rel);
+    return;
+  }
+  auto resolved = pkg->resolve_asset(*rel, r.pointer_of(key));
+  if (!resolved) {
+    // resolve_asset already names job.json and the pointer.
+    const std::string& m = resolved.error().message;
+    const std::string prefix = r.problems().file() + ": ";
+    r.problems().add(r.pointer_of(key), m.rfind(prefix, 0) == 0 ? m.substr(m.find(": ", prefix.size()) + 2) : m);
+    return;
+  }
+  out = *resolved;
+}
+
+void read_garment(FieldReader g, const JobPackage* pkg, GarmentSpec& spec) {
+  g.reject_unknown({"pattern", "pattern_format", "garment_mesh", "sample", "size", "body", "stitches", "mesh_edge"});
+  read_asset(g, "pattern", false, pkg, spec.pattern);
+  if (auto v = g.choice("pattern_format", false, {"auto", "native", "garmentcode", "freesewing-svg", "dxf-aama"}))
+    spec.pattern_format = *v;
+  read_asset(g, "garment_mesh", false, pkg, spec.garment_mesh);
+  if (auto v = g.string("sample", false)) spec.sample = *v;
+  if (auto v = g.string("size", false)) spec.size = *v;
+  if (auto v = g.choice("stitches", false, {"pattern", "suggest"})) spec.stitches = *v;
+  if (auto v = g.length_mm("mesh_edge", false, 2, 200)) spec.mesh_edge_mm = *v;
+  int sources = (spec.pattern ? 1 : 0) + (spec.garment_mesh ? 1 : 0) + (spec.sample.empty() ? 0 : 1);
+  if (sources == 0 && !g.problems().items().size())
+    g.problems().add(g.pointer(), "one of \"pattern\", \"garment_mesh\" or \"sample\" is required");
+  else if (sources > 1)
+    g.problems().add(g.pointer(), "give only one of \"pattern\", \"garment_mesh\" or \"sample\"");
+
+  if (auto body = g.object("body", false)) {
+    body->reject_unknown({"dress_form", "mesh", "units"});
+    if (auto df = body->object("dress_form", false)) {
+      spec.body_kind = "dress_form";
+      const nlohmann::json* raw = body->raw("dress_form");
+      for (auto it = raw->begin(); it != raw->end(); ++it) {
+        if (auto mm = df->length_mm(it.key(), true, 1, 3000)) spec.dress_form_mm.emplace_back(it.key(), *mm);
+      }
+    }
+    if (body->has("mesh")) {
+      spec.body_kind = "mesh";
+      read_asset(*body, "mesh", true, pkg, spec.body_mesh);
+      auto units = body->choice("units", true, {"mm", "cm", "m", "in"});
+      if (units) spec.body_mesh_scale_to_mm = *units == "mm" ? 1 : *units == "cm" ? 10 : *units == "m" ? 1000 : 25.4;
+    } else if (body->has("units")) {
+      body->problems().add(body->pointer_of("units"), "\"units\" belongs with \"mesh\"");
+    }
+    if (body->has("dress_form") && body->has("mesh"))
+      body->problems().add(body->pointer(), "give either \"dress_form\" or \"mesh\", not both");
+  }
+}
+
+void read_layer(FieldReader l, const JobPackage* pkg, DesignLayerSpec& s) {
+  auto type = l.choice("type", true, {"planar", "cylindrical", "stroke", "texture"});
+  if (!type) return;
+  s.type = *type;
+  if (auto v = l.string("name", false)) s.name = *v;
+  if (auto v = l.number("opacity", false, 0, 1)) s.opacity = *v;
+  std::set<std::string> known{"type", "name", "opacity"};
+  auto image_source = [&]() {
+    known.insert({"image", "procedural"});
+    if (auto p = l.object("procedural", false)) {
+      p->reject_unknown({"kind", "seed", "size_px"});
+      if (auto k = p->choice("kind", true, {"marbling", "stripes", "motif", "checker"})) s.procedural = *k;
+      if (auto v = p->integer("seed", false, 0, 1 << 30)) s.procedural_seed = *v;
+      if (auto v = p->integer("size_px", false, 16, 16384)) s.procedural_size_px = *v;
+    }
+    read_asset(l, "image", false, pkg, s.image);
+    if (!s.image && s.procedural.empty() && !l.has("image") && !l.has("procedural"))
+      l.problems().add(l.pointer(), "a " + s.type + " layer needs \"image\" or \"procedural\"");
+    if (l.has("image") && l.has("procedural"))
+      l.problems().add(l.pointer(), "give either \"image\" or \"procedural\", not both");
+  };
+  if (s.type == "planar") {
+    image_source();
+    known.insert({"centre", "normal", "up", "width", "height", "repeat"});
+    if (auto v = l.vector<3>("centre", true, true)) s.centre_mm = *v;
+    if (auto v = l.vector<3>("normal", false, false)) s.normal = *v;
+    if (auto v = l.vector<3>("up", false, false)) s.up = *v;
+    if (auto v = l.length_mm("width", true, 1, kMaxLengthMm)) s.width_mm = *v;
+    if (auto v = l.length_mm("height", false, 1, kMaxLengthMm)) s.height_mm = *v;
+    if (auto v = l.boolean("repeat", false)) s.repeat = *v;
+  } else if (s.type == "cylindrical") {
+    image_source();
+    known.insert({"axis_origin", "axis_direction", "tile_width", "tile_height", "rotation_deg", "offset", "repeat"});
+    if (auto v = l.vector<3>("axis_origin", false, true)) s.axis_origin_mm = *v;
+    if (auto v = l.vector<3>("axis_direction", false, false)) s.axis_direction = *v;
+    if (auto v = l.length_mm("tile_width", false, 1, kMaxLengthMm)) s.tile_width_mm = *v;
+    if (auto v = l.length_mm("tile_height", false, 1, kMaxLengthMm)) s.tile_height_mm = *v;
+    if (auto v = l.number("rotation_deg", false, -360, 360)) s.rotation_deg = *v;
+    if (auto v = l.vector<2>("offset", false, true)) s.offset_mm = *v;
+    s.repeat = true;
+    if (auto v = l.boolean("repeat", false)) s.repeat = *v;
+  } else if (s.type == "stroke") {
+    known.insert({"points", "radius", "colour", "hardness"});
+    if (auto v = l.length_mm("radius", true, 0.1, 1000)) s.radius_mm = *v;
+    if (auto v = l.number("hardness", false, 0, 1)) s.hardness = *v;
+    if (auto v = l.vector<4>("colour", false, false)) {
+      for (int i = 0; i < 4; ++i) {
+        if ((*v)[i] < 0 || (*v)[i] > 255) l.problems().add(l.pointer_of("colour") + "/" + std::to_string(i), "channel outside 0..255");
+        s.colour_rgba[i] = static_cast<int>((*v)[i]);
+      }
+    }
+    if (auto pts = l.vector_list<3>("points", true, true, 1)) s.points_mm = *pts;
+  } else if (s.type == "texture") {
+    known.insert({"mesh", "image"});
+    read_asset(l, "mesh", true, pkg, s.mesh);
+    read_asset(l, "image", true, pkg, s.image);
+  }
+  l.reject_unknown(known);
+}
+
+void read_finishing(FieldReader f, FinishingSpec& s) {
+  f.reject_unknown({"seam_allowance", "hem_allowance", "edges", "corner_style", "notches", "labels", "grain_line"});
+  if (auto v = f.length_mm("seam_allowance", false, 0, 100)) s.seam_allowance_mm = *v;
+  if (auto v = f.length_mm("hem_allowance", false, 0, 200)) s.hem_allowance_mm = *v;
+  if (auto v = f.choice("corner_style", false, {"mitre", "square", "mirror"})) s.corner_style = *v;
+  if (auto v = f.boolean("notches", false)) s.notches = *v;
+  if (auto v = f.choice("labels", false, {"inside", "separate", "none"})) s.labels = *v;
+  if (auto v = f.boolean("grain_line", false)) s.grain_line = *v;
+  for (auto& e : f.objects("edges", false)) {
+    e.reject_unknown({"piece", "edge", "allowance"});
+    EdgeAllowance ea;
+    auto piece = e.string("piece", true);
+    auto edge = e.string("edge", true);
+    auto mm = e.length_mm("allowance", true, 0, 200);
+    if (piece && edge && mm) s.edges.push_back({*piece, *edge, *mm});
+  }
+}
+
+void read_marker(FieldReader m, MarkerSpec& s) {
+  m.reject_unknown({"fabric_width", "gap", "edge_margin", "rotations", "mirror", "time_limit_s", "seed",
+                    "max_length", "defects"});
+  if (auto v = m.length_mm("fabric_width", true, 100, 10000)) s.fabric_width_mm = *v;
+  if (auto v = m.length_mm("gap", false, 0, 100)) s.gap_mm = *v;
+  if (auto v = m.length_mm("edge_margin", false, 0, 500)) s.edge_margin_mm = *v;
+  if (auto v = m.choice("rotations", false, {"grain", "90", "free", "fixed"})) s.rotations = *v;
+  if (auto v = m.boolean("mirror", false)) s.mirror = *v;
+  if (auto v = m.number("time_limit_s", false, 0, 3600)) s.time_limit_s = *v;
+  if (auto v = m.integer("seed", false, 0, 1 << 30)) s.seed = *v;
+  if (auto v = m.length_mm("max_length", false, 100, kMaxLengthMm)) s.max_length_mm = *v;
+  for (auto& d : m.objects("defects", false)) {
+    d.reject_unknown({"x", "y", "width", "length"});
+    DefectZone z;
+    auto x = d.length_mm("x", true, 0, 10000), y = d.length_mm("y", true, 0, kMaxLengthMm);
+    auto w = d.length_mm("width", true, 0.1, 10000), l = d.length_mm("length", true, 0.1, kMaxLengthMm);
+    if (x && y && w && l) s.defects.push_back({*x, *y, *w, *l});
+  }
+}
+
+void read_print(FieldReader p, const JobPackage* pkg, PrintSpec& s) {
+  p.reject_unknown({"printer", "printer_model", "dpi", "passes", "bidirectional", "screen", "levels", "icc_profile",
+                    "ink_limit_pct", "separations_tiff", "preview_dpi"});
+  if (auto v = p.choice("printer", false, {"sim", "usb"})) s.printer = *v;
+  read_asset(p, "printer_model", false, pkg, s.printer_model);
+  if (auto v = p.integer("dpi", false, 25, 2400)) s.dpi = *v;
+  if (auto v = p.integer("passes", false, 1, 8)) {
+    if (*v != 1 && *v != 2 && *v != 4 && *v != 8) p.problems().add(p.pointer_of("passes"), "passes must be 1, 2, 4 or 8");
+    s.passes = *v;
+  }
+  if (auto v = p.boolean("bidirectional", false)) s.bidirectional = *v;
+  if (auto v = p.choice("screen", false, {"blue-noise", "error-diffusion"})) s.screen = *v;
+  if (auto v = p.integer("levels", false, 2, 4)) {
+    if (*v == 3) p.problems().add(p.pointer_of("levels"), "levels must be 2 (bi-level) or 4 (none/small/medium/large)");
+    s.levels = *v;
+  }
+  read_asset(p, "icc_profile", false, pkg, s.icc_profile);
+  if (auto v = p.number("ink_limit_pct", false, 100, 400)) s.ink_limit_pct = *v;
+  if (auto v = p.boolean("separations_tiff", false)) s.separations_tiff = *v;
+  if (auto v = p.integer("preview_dpi", false, 5, 300)) s.preview_dpi = *v;
+}
+
+}  // namespace
+
+Result<Job> parse_job(const std::string& text, const JobPackage* pkg) {
+  nlohmann::json doc;
+  try {
+    doc = nlohmann::json::parse(text);
+  } catch (const nlohmann::json::parse_error& e) {
+    return fail(ErrorCode::kValidation, std::string("job.json: not valid JSON: ") + e.what());
+  }
+  Problems problems("job.json");
+  if (!doc.is_object()) return fail(ErrorCode::kValidation, "job.json: /: expected a JSON object");
+  FieldReader top(doc, "", problems);
+  top.reject_unknown({"format", "name", "garment", "design", "finishing", "marker", "print"});
+
+  Job job;
+  if (auto fmt = top.string("format", true); fmt && *fmt != kJobFormat)
+    problems.add("/format", "unsupported format \"" + *fmt + "\" (this host reads \"" + kJobFormat + "\")");
+  if (auto name = top.string("name", true)) {
+    bool ok = !name->empty() && name->size() <= 100;
+    for (char c : *name) ok = ok && (std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' || c == '.');
+    if (!ok || (*name)[0] == '.')
+      problems.add("/name", "job name \"" + *name + "\" must be 1-100 letters, digits, '-', '_' or '.' (not leading)");
+    else
+      job.name = *name;
+  }
+  if (auto g = top.object("garment", true)) read_garment(*g, pkg, job.garment);
+  if (auto d = top.object("design", false)) {
+    d->reject_unknown({"layers"});
+    for (auto& l : d->objects("layers", true)) {
+      DesignLayerSpec s;
+      read_layer(l, pkg, s);
+      job.design.push_back(std::move(s));
+    }
+  }
+  if (auto f = top.object("finishing", false)) read_finishing(*f, job.finishing);
+  if (auto m = top.object("marker", true)) read_marker(*m, job.marker);
+  if (auto p = top.object("print", false)) read_print(*p, pkg, job.print);
+
+  if (!problems.empty()) {
+    bool unsafe = false;
+    std::string msg;
+    for (const auto& item : problems.items()) {
+      msg += (msg.empty() ? "" : "\n") + item;
+      unsafe = unsafe || item.find("leaves the package") != std::string::npos ||
+               item.find("absolute path") != std::string::npos;
+    }
+    return fail(unsafe ? ErrorCode::kUnsafePath : ErrorCode::kValidation, msg);
+  }
+  if (pkg) {
+    job.package_root = pkg->root();
+    job.manifest = pkg->root() / "job.json";
+  }
+  return job;
+}
+
+Result<Job> load_job(const JobPackage& package) {
+  std::ifstream in(package.root() / "job.json", std::ios::binary);
+  if (!in) return fail(ErrorCode::kIo, (package.root() / "job.json").string() + ": cannot read");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  std::string text = ss.str();
+  if (text.size() > (16u << 20)) return fail(ErrorCode::kValidation, "job.json: larger than 16 MiB");
+  return parse_job(text, &package);
+}
+
+}  // namespace tp::host

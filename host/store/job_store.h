@@ -1,0 +1,78 @@
+// host/store/job_store.h: the daemon's persistent job queue and per-job stage states (SQLite).
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "host/common/error.h"
+
+struct sqlite3;
+
+namespace tp::host {
+
+enum class JobState { kQueued, kRunning, kDone, kFailed, kCancelled };
+std::string_view to_string(JobState s);
+std::optional<JobState> job_state_from_string(std::string_view s);
+
+/// One job as the store knows it.
+struct JobRecord {
+  std::int64_t id = 0;
+  std::string name;
+  std::string package;               ///< spooled package path (folder or zip) owned by the daemon
+  std::string out_dir;               ///< where its outputs go
+  std::string origin;                ///< where it came from: "hot-folder:<path>", "socket", "cli"
+  JobState state = JobState::kQueued;
+  std::string stage;                 ///< current or last pipeline stage
+  std::string error;                 ///< why it failed
+  std::int64_t submitted_ms = 0;     ///< Unix time, ms
+  std::int64_t updated_ms = 0;
+  std::int64_t last_acked_swath = -1;  ///< print checkpoint: highest swath the printer acknowledged
+  bool cancel_requested = false;
+};
+
+/// Stage state of one job (PrusaSlicer's PrintState idea: one home for progress and resume).
+struct StageRecord {
+  std::string stage;
+  std::string state;                 ///< "fresh", "running", "done", "failed", "cancelled"
+  double seconds = 0;
+};
+
+/// A SQLite-backed job store. One instance per thread (connections are not shared).
+class JobStore {
+ public:
+  JobStore(JobStore&&) noexcept;
+  JobStore& operator=(JobStore&&) noexcept;
+  ~JobStore();
+
+  /// Opens or creates the database file (WAL mode, schema migrated).
+  [[nodiscard]] static Result<JobStore> open(const std::filesystem::path& db_path);
+
+  [[nodiscard]] Result<std::int64_t> enqueue(const std::string& name, const std::string& package,
+                                             const std::string& out_dir, const std::string& origin);
+  /// Atomically takes the oldest queued job and marks it running.
+  [[nodiscard]] Result<std::optional<JobRecord>> claim_next();
+  [[nodiscard]] Result<std::optional<JobRecord>> get(std::int64_t id);
+  /// Newest first.
+  [[nodiscard]] Result<std::vector<JobRecord>> list(int limit);
+  [[nodiscard]] Status set_state(std::int64_t id, JobState state, const std::string& error = {});
+  [[nodiscard]] Status set_stage(std::int64_t id, const std::string& stage, const std::string& state,
+                                 double seconds);
+  [[nodiscard]] Result<std::vector<StageRecord>> stages(std::int64_t id);
+  [[nodiscard]] Status set_checkpoint(std::int64_t id, std::int64_t last_acked_swath);
+  /// Queued jobs become cancelled at once; a running job gets cancel_requested for its worker.
+  /// Fails with kJob if the job does not exist or has already ended.
+  [[nodiscard]] Result<JobState> request_cancel(std::int64_t id);
+  /// After a crash or restart: jobs left "running" go back to "queued", keeping their checkpoint.
+  [[nodiscard]] Result<int> requeue_interrupted();
+
+ private:
+  explicit JobStore(sqlite3* db) : db_(db) {}
+  [[nodiscard]] Status exec(const std::string& sql);
+  sqlite3* db_ = nullptr;
+};
+
+}  // namespace tp::host
