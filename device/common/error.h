@@ -52,4 +52,7 @@ using Status = std::expected<void, Error>;
   return std::unexpected(Error{code, std::move(message)});
 }
 
+/// Returns an existing error (e.g. one given context) as a failure: `return fail(e.with_context(..));`.
+[[nodiscard]] inline std::unexpected<Error> fail(Error error) { return std::unexpected(std::move(error)); }
+
 }  // namespace tp::device
