@@ -1,0 +1,104 @@
+// rip/image/image_write.cpp: PNG and multi-channel TIFF output through OpenImageIO.
+#include <algorithm>
+#include <string>
+
+#include <OpenImageIO/imageio.h>
+#include <spdlog/fmt/fmt.h>
+
+#include "rip/image/image_io.h"
+#include "rip/image/internal/tiff_spec.h"
+
+namespace tp::rip {
+
+namespace OIIO = OIIO_NAMESPACE;
+
+namespace {
+
+Status write_whole(const std::filesystem::path& path, const OIIO::ImageSpec& spec, const std::uint8_t* data) {
+  const std::string name = path.string();
+  auto out = OIIO::ImageOutput::create(name);
+  if (!out) return fail(ErrorCode::kIo, fmt::format("{}: cannot create image writer: {}", name, OIIO::geterror()));
+  if (!out->open(name, spec))
+    return fail(ErrorCode::kIo, fmt::format("{}: cannot open for writing: {}", name, out->geterror()));
+  if (!out->write_image(OIIO::TypeDesc::UINT8, data)) {
+    std::string why = out->geterror();
+    out->close();
+    return fail(ErrorCode::kIo, fmt::format("{}: cannot write image: {}", name, why));
+  }
+  if (!out->close()) return fail(ErrorCode::kIo, fmt::format("{}: cannot finish image: {}", name, out->geterror()));
+  return {};
+}
+
+}  // namespace
+
+Status write_png(const std::filesystem::path& path, const geometry::ImageRgba8& image, PngChannels channels) {
+  const size_t n = static_cast<size_t>(std::max(image.width_px, 0)) * std::max(image.height_px, 0);
+  if (image.width_px <= 0 || image.height_px <= 0 || image.pixels.size() != n)
+    return fail(ErrorCode::kInvalidArgument,
+                fmt::format("{}: image is {}x{} but holds {} pixels", path.string(), image.width_px,
+                            image.height_px, image.pixels.size()));
+  const int nch = channels == PngChannels::kRgba ? 4 : 3;
+  OIIO::ImageSpec spec(image.width_px, image.height_px, nch, OIIO::TypeDesc::UINT8);
+  spec.attribute("oiio:ColorSpace", "sRGB");
+  if (nch == 4) {
+    // Our pixels carry straight alpha; without this OIIO would un-premultiply them once more.
+    spec.attribute("oiio:UnassociatedAlpha", 1);
+    return write_whole(path, spec, reinterpret_cast<const std::uint8_t*>(image.pixels.data()));
+  }
+  // Over white fabric: c' = c*a + 255*(1-a), rounded.
+  std::vector<std::uint8_t> rgb(n * 3);
+  for (size_t i = 0; i < n; ++i) {
+    const geometry::Rgba8 p = image.pixels[i];
+    const unsigned a = p.a, ia = 255 - a;
+    rgb[3 * i + 0] = static_cast<std::uint8_t>((p.r * a + 255 * ia + 127) / 255);
+    rgb[3 * i + 1] = static_cast<std::uint8_t>((p.g * a + 255 * ia + 127) / 255);
+    rgb[3 * i + 2] = static_cast<std::uint8_t>((p.b * a + 255 * ia + 127) / 255);
+  }
+  return write_whole(path, spec, rgb.data());
+}
+
+Status write_tiff(const std::filesystem::path& path, const ChannelImage8& image, int bits_per_sample,
+                  TiffCompression compression) {
+  auto spec = tiff_spec(path, image.width_px, image.height_px, image.channel_names, bits_per_sample, compression);
+  if (!spec) return std::unexpected(spec.error());
+  const size_t n = static_cast<size_t>(image.width_px) * image.height_px * image.channel_names.size();
+  if (image.samples.size() != n)
+    return fail(ErrorCode::kInvalidArgument, fmt::format("{}: {}x{}x{} image holds {} samples", path.string(),
+                                                         image.width_px, image.height_px,
+                                                         image.channel_names.size(), image.samples.size()));
+  if (bits_per_sample == 8) return write_whole(path, *spec, image.samples.data());
+  // OIIO takes n-bit samples in the full 8-bit range and rescales them on write.
+  std::vector<std::uint8_t> scaled(n);
+  const unsigned maxv = (1u << bits_per_sample) - 1;
+  for (size_t i = 0; i < n; ++i) scaled[i] = static_cast<std::uint8_t>(std::min<unsigned>(image.samples[i], maxv) * 255 / maxv);
+  return write_whole(path, *spec, scaled.data());
+}
+
+Result<ChannelImage8> read_channels8(const std::filesystem::path& path) {
+  const std::string name = path.string();
+  auto in = OIIO::ImageInput::open(name);
+  if (!in) return fail(ErrorCode::kImage, fmt::format("{}: cannot open image: {}", name, OIIO::geterror()));
+  const OIIO::ImageSpec& spec = in->spec();
+  if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0 ||
+      static_cast<std::int64_t>(spec.width) * spec.height * spec.nchannels > kMaxImagePixels * 4)
+    return fail(ErrorCode::kImage, fmt::format("{}: unsupported dimensions {}x{}x{}", name, spec.width,
+                                               spec.height, spec.nchannels));
+  ChannelImage8 img;
+  img.width_px = spec.width;
+  img.height_px = spec.height;
+  img.channel_names = parse_channel_description(spec.get_string_attribute("ImageDescription"),
+                                                static_cast<size_t>(spec.nchannels));
+  if (img.channel_names.empty()) img.channel_names = spec.channelnames;
+  img.samples.resize(static_cast<size_t>(spec.width) * spec.height * spec.nchannels);
+  if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::UINT8, img.samples.data()))
+    return fail(ErrorCode::kImage, fmt::format("{}: cannot decode: {}", name, in->geterror()));
+  // n-bit files come back rescaled to 0..255; return the file's own levels.
+  const int bits = spec.get_int_attribute("oiio:BitsPerSample", 8);
+  if (bits > 0 && bits < 8) {
+    const unsigned maxv = (1u << bits) - 1;
+    for (auto& s : img.samples) s = static_cast<std::uint8_t>((s * maxv + 127) / 255);
+  }
+  return img;
+}
+
+}  // namespace tp::rip
