@@ -144,7 +144,6 @@ void read_finishing(FieldReader f, FinishingSpec& s) {
   if (auto v = f.boolean("grain_line", false)) s.grain_line = *v;
   for (auto& e : f.objects("edges", false)) {
     e.reject_unknown({"piece", "edge", "allowance"});
-    EdgeAllowance ea;
     auto piece = e.string("piece", true);
     auto edge = e.string("edge", true);
     auto mm = e.length_mm("allowance", true, 0, 200);
@@ -165,7 +164,6 @@ void read_marker(FieldReader m, MarkerSpec& s) {
   if (auto v = m.length_mm("max_length", false, 100, kMaxLengthMm)) s.max_length_mm = *v;
   for (auto& d : m.objects("defects", false)) {
     d.reject_unknown({"x", "y", "width", "length"});
-    DefectZone z;
     auto x = d.length_mm("x", true, 0, 10000), y = d.length_mm("y", true, 0, kMaxLengthMm);
     auto w = d.length_mm("width", true, 0.1, 10000), l = d.length_mm("length", true, 0.1, kMaxLengthMm);
     if (x && y && w && l) s.defects.push_back({*x, *y, *w, *l});

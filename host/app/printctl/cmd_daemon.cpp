@@ -1,8 +1,127 @@
-// host/app/printctl/cmd_daemon.cpp: registers the daemon commands of printctl (not built yet).
+// host/app/printctl/cmd_daemon.cpp: printctl submit | status | cancel, talking to printd.
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <thread>
+
 #include "host/app/printctl/commands.h"
+#include "host/daemon/control_socket.h"
 
 namespace tp::host::cli {
 
-void register_daemon_commands(CLI::App& /*app*/) {}
+namespace {
+
+using nlohmann::json;
+namespace fs = std::filesystem;
+
+struct DaemonArgs {
+  std::string state_dir = "/var/lib/printd";
+  std::string socket;
+  fs::path socket_path() const { return socket.empty() ? default_socket_path(state_dir) : fs::path(socket); }
+};
+
+void add_daemon_options(CLI::App* cmd, DaemonArgs& a) {
+  cmd->add_option("--state-dir", a.state_dir, "printd's state directory")->capture_default_str();
+  cmd->add_option("--socket", a.socket, "printd's control socket (default <state-dir>/printd.sock)");
+}
+
+// Sends a request and returns the reply object, or fails the command with the daemon's error.
+json request(const DaemonArgs& a, const json& req) {
+  auto reply = socket_request(a.socket_path(), req.dump());
+  if (!reply) {
+    std::fprintf(stderr, "printctl: %s\n", reply.error().message.c_str());
+    throw CLI::RuntimeError(3);
+  }
+  json r = json::parse(*reply, nullptr, false);
+  if (r.is_discarded() || !r.is_object()) {
+    std::fprintf(stderr, "printctl: unreadable reply from printd\n");
+    throw CLI::RuntimeError(3);
+  }
+  if (!r.value("ok", false)) {
+    std::fprintf(stderr, "printctl: %s\n", r.value("error", std::string("request failed")).c_str());
+    throw CLI::RuntimeError(1);
+  }
+  return r;
+}
+
+void print_job_line(const json& j) {
+  std::printf("%-5lld %-10s %-9s %-32s %s\n", static_cast<long long>(j.value("id", 0LL)),
+              j.value("state", std::string()).c_str(), j.value("stage", std::string()).c_str(),
+              j.value("name", std::string()).c_str(), j.value("error", std::string()).substr(0, 60).c_str());
+}
+
+}  // namespace
+
+void register_daemon_commands(CLI::App& app) {
+  static DaemonArgs args;
+  static std::string package;
+  static bool wait = false;
+  static double wait_timeout_s = 3600;
+  CLI::App* submit = app.add_subcommand("submit", "Queue a job (folder or .zip) on the running printd");
+  submit->add_option("job", package, "Job package")->required();
+  submit->add_flag("--wait", wait, "Wait until the job ends; exit 0 only if it is done");
+  submit->add_option("--timeout", wait_timeout_s, "Seconds to wait with --wait");
+  add_daemon_options(submit, args);
+  submit->callback([] {
+    json r = request(args, {{"op", "submit"}, {"package", fs::absolute(package).lexically_normal().string()}});
+    const long long id = r["id"];
+    std::printf("queued job %lld '%s'\n", id, r.value("name", std::string()).c_str());
+    if (!wait) return;
+    auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(wait_timeout_s);
+    for (;;) {
+      json s = request(args, {{"op", "status"}, {"id", id}})["job"];
+      const std::string state = s.value("state", "");
+      if (state == "done") {
+        std::printf("job %lld done: %s\n", id, s.value("out_dir", std::string()).c_str());
+        return;
+      }
+      if (state == "failed" || state == "cancelled") {
+        std::fprintf(stderr, "job %lld %s: %s\n", id, state.c_str(), s.value("error", std::string()).c_str());
+        throw CLI::RuntimeError(1);
+      }
+      if (std::chrono::steady_clock::now() > deadline) {
+        std::fprintf(stderr, "job %lld still %s after %.0f s\n", id, state.c_str(), wait_timeout_s);
+        throw CLI::RuntimeError(4);
+      }
+      std::this_thread::sleep_for(std::chrono::milliseconds(250));
+    }
+  });
+
+  static long long status_id = -1;
+  static bool status_json = false;
+  CLI::App* status = app.add_subcommand("status", "Show printd's jobs, or one job with its stages");
+  status->add_option("id", status_id, "Job id");
+  status->add_flag("--json", status_json, "Print the daemon's JSON reply");
+  add_daemon_options(status, args);
+  status->callback([] {
+    json req = {{"op", "status"}};
+    if (status_id >= 0) req["id"] = status_id;
+    json r = request(args, req);
+    if (status_json) {
+      std::printf("%s\n", r.dump(2).c_str());
+      return;
+    }
+    std::printf("%-5s %-10s %-9s %-32s %s\n", "ID", "STATE", "STAGE", "NAME", "ERROR");
+    if (r.contains("job")) {
+      print_job_line(r["job"]);
+      for (const auto& s : r["job"].value("stages", json::array()))
+        std::printf("      %-10s %-9s %.2f s\n", s.value("stage", std::string()).c_str(),
+                    s.value("state", std::string()).c_str(), s.value("seconds", 0.0));
+    } else {
+      for (const auto& j : r["jobs"]) print_job_line(j);
+    }
+  });
+
+  static long long cancel_id = -1;
+  CLI::App* cancel = app.add_subcommand("cancel", "Cancel a queued or running job");
+  cancel->add_option("id", cancel_id, "Job id")->required();
+  add_daemon_options(cancel, args);
+  cancel->callback([] {
+    json r = request(args, {{"op", "cancel"}, {"id", cancel_id}});
+    std::printf("job %lld %s\n", cancel_id, r.value("state", std::string()).c_str());
+  });
+}
 
 }  // namespace tp::host::cli

@@ -1,8 +1,67 @@
-// host/app/printctl/cmd_job.cpp: registers the job commands of printctl (not built yet).
+// host/app/printctl/cmd_job.cpp: printctl validate | run: a job from the command line.
+#include <unistd.h>
+
+#include <cstdio>
+#include <filesystem>
+
 #include "host/app/printctl/commands.h"
+#include "host/job/manifest.h"
+#include "host/job/package.h"
+#include "host/pipeline/run_job.h"
 
 namespace tp::host::cli {
 
-void register_job_commands(CLI::App& /*app*/) {}
+namespace {
+
+namespace fs = std::filesystem;
+
+// Opens and validates a package; a zip is unpacked into `scratch`.
+Result<Job> open_job(const fs::path& path, const fs::path& scratch) {
+  auto pkg = JobPackage::open(path, scratch);
+  if (!pkg) return fail(pkg.error());
+  return load_job(*pkg);
+}
+
+[[noreturn]] void die(const Error& e, int code) {
+  std::fprintf(stderr, "%s\n", e.message.c_str());
+  throw CLI::RuntimeError(code);
+}
+
+}  // namespace
+
+void register_job_commands(CLI::App& app) {
+  static std::string validate_path;
+  CLI::App* validate = app.add_subcommand("validate", "Check a job package; exit 0 if it is valid");
+  validate->add_option("job", validate_path, "Job folder or .zip")->required();
+  validate->callback([] {
+    fs::path scratch = fs::temp_directory_path() / ("printctl-validate-" + std::to_string(::getpid()));
+    auto job = open_job(validate_path, scratch);
+    std::error_code ec;
+    fs::remove_all(scratch, ec);
+    if (!job) die(job.error(), 1);
+    std::printf("%s: valid job '%s'\n", validate_path.c_str(), job->name.c_str());
+  });
+
+  static std::string run_path, run_out, run_printer;
+  static long long resume_after = -1;
+  CLI::App* run = app.add_subcommand("run", "Run a job end to end and print it");
+  run->add_option("job", run_path, "Job folder or .zip")->required();
+  run->add_option("--out", run_out, "Output folder (report.json, marker.png, pieces, fabric.png)")->required();
+  run->add_option("--printer", run_printer, "Override the job's printer: sim, usb or none")
+      ->check(CLI::IsMember({"sim", "usb", "none"}));
+  run->add_option("--resume-after-swath", resume_after, "Swaths up to this index were already printed");
+  run->callback([] {
+    fs::path out = fs::absolute(run_out);
+    auto job = open_job(run_path, out / "package");
+    if (!job) die(job.error(), 1);
+    RunOptions opt;
+    opt.out_dir = out;
+    opt.printer_override = run_printer;
+    opt.resume_after_swath = resume_after;
+    geometry::CancelToken cancel;
+    if (auto st = run_job(*job, opt, cancel); !st) die(st.error(), 1);
+    std::printf("job '%s' done: %s\n", job->name.c_str(), (out / "report.json").c_str());
+  });
+}
 
 }  // namespace tp::host::cli

@@ -1,0 +1,43 @@
+// host/pipeline/internal/pipeline_state.h: what the stages of one job hand to each other.
+#pragma once
+
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <vector>
+
+#include "geometry/design/design.h"
+#include "geometry/design/piece_renderer.h"
+#include "geometry/garment/garment.h"
+#include "geometry/nesting/marker.h"
+#include "geometry/pattern/pattern.h"
+#include "host/job/job.h"
+#include "host/pipeline/run_job.h"
+
+namespace tp::host::internal {
+
+struct PipelineState {
+  const Job& job;
+  const RunOptions& options;
+  const geometry::CancelToken& cancel;
+  nlohmann::json& report;
+
+  geometry::Pattern pattern;
+  std::optional<geometry::Garment> garment;       ///< 3D (or flat) correspondence
+  bool garment_is_3d = false;
+  geometry::Design design;
+  std::unique_ptr<geometry::PieceRenderer> renderer;
+  std::vector<geometry::Marker> markers;
+};
+
+// One function per stage (stage_<name>.cpp), each filling PipelineState and the report.
+Status stage_intake(PipelineState& ps);
+Status stage_pattern(PipelineState& ps);
+Status stage_mesh(PipelineState& ps);
+Status stage_garment(PipelineState& ps);
+Status stage_design(PipelineState& ps);
+Status stage_marker(PipelineState& ps);
+Status stage_print(PipelineState& ps);
+Status stage_outputs(PipelineState& ps);
+
+}  // namespace tp::host::internal

@@ -1,0 +1,60 @@
+// host/pipeline/internal/stage_tracker.h: runs pipeline stages in order, timing each, reporting
+// its state to the caller (the daemon's store) and into the job report.
+#pragma once
+
+#include <chrono>
+#include <nlohmann/json.hpp>
+
+#include "host/pipeline/run_job.h"
+
+namespace tp::host::internal {
+
+class StageTracker {
+ public:
+  StageTracker(const RunOptions& options, const geometry::CancelToken& cancel, nlohmann::json& report)
+      : options_(options), cancel_(cancel), report_(report) {
+    report_["stages"] = nlohmann::json::array();
+    for (Stage s : kAllStages)
+      report_["stages"].push_back({{"stage", to_string(s)}, {"state", to_string(StageState::kFresh)}, {"seconds", 0.0}});
+  }
+
+  /// Runs `body` (returning Status) as stage `s`; a cancelled token fails the stage as cancelled.
+  template <class Body>
+  Status run(Stage s, Body&& body) {
+    if (cancel_.cancelled()) return finish(s, StageState::kCancelled, 0, fail(ErrorCode::kCancelled, "job cancelled"));
+    set(s, StageState::kRunning, 0);
+    auto t0 = std::chrono::steady_clock::now();
+    Status st = body();
+    double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (st) return finish(s, StageState::kDone, secs, st);
+    bool cancelled = st.error().code == ErrorCode::kCancelled || cancel_.cancelled();
+    Error e = st.error();
+    if (cancelled) e.code = ErrorCode::kCancelled;
+    return finish(s, cancelled ? StageState::kCancelled : StageState::kFailed, secs,
+                  fail(e.with_context(std::string(to_string(s)))));
+  }
+
+  /// Marks a stage as not applicable to this job.
+  void skip(Stage s) { set(s, StageState::kSkipped, 0); }
+
+ private:
+  Status finish(Stage s, StageState state, double secs, Status st) {
+    set(s, state, secs);
+    return st;
+  }
+  void set(Stage s, StageState state, double secs) {
+    for (auto& e : report_["stages"]) {
+      if (e["stage"] == to_string(s)) {
+        e["state"] = to_string(state);
+        e["seconds"] = secs;
+      }
+    }
+    if (options_.on_stage) options_.on_stage(s, state, secs);
+  }
+
+  const RunOptions& options_;
+  const geometry::CancelToken& cancel_;
+  nlohmann::json& report_;
+};
+
+}  // namespace tp::host::internal

@@ -1,0 +1,101 @@
+// host/pipeline/run_job.cpp: runs a job's stages in order and always leaves report.json behind.
+#include "host/pipeline/run_job.h"
+
+#include <spdlog/spdlog.h>
+
+#include <chrono>
+#include <ctime>
+#include <fstream>
+
+#include "host/pipeline/internal/pipeline_state.h"
+#include "host/pipeline/internal/stage_tracker.h"
+
+namespace tp::host {
+
+namespace fs = std::filesystem;
+
+std::string_view to_string(Stage stage) {
+  switch (stage) {
+    case Stage::kIntake: return "intake";
+    case Stage::kPattern: return "pattern";
+    case Stage::kMesh: return "mesh";
+    case Stage::kGarment: return "garment";
+    case Stage::kDesign: return "design";
+    case Stage::kMarker: return "marker";
+    case Stage::kPrint: return "print";
+    case Stage::kOutputs: return "outputs";
+  }
+  return "unknown";
+}
+
+std::string_view to_string(StageState state) {
+  switch (state) {
+    case StageState::kFresh: return "fresh";
+    case StageState::kRunning: return "running";
+    case StageState::kDone: return "done";
+    case StageState::kFailed: return "failed";
+    case StageState::kCancelled: return "cancelled";
+    case StageState::kSkipped: return "skipped";
+  }
+  return "unknown";
+}
+
+namespace {
+
+std::string utc_now() {
+  std::time_t t = std::time(nullptr);
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y-%m-%dT%H:%M:%SZ", std::gmtime(&t));
+  return buf;
+}
+
+Status write_report(const fs::path& out_dir, const nlohmann::json& report) {
+  fs::path tmp = out_dir / "report.json.tmp";
+  {
+    std::ofstream out(tmp);
+    out << report.dump(2) << "\n";
+    if (!out) return fail(ErrorCode::kIo, tmp.string() + ": cannot write");
+  }
+  // Replace atomically so a reader never sees half a report.
+  std::error_code ec;
+  fs::rename(tmp, out_dir / "report.json", ec);
+  if (ec) return fail(ErrorCode::kIo, (out_dir / "report.json").string() + ": " + ec.message());
+  return {};
+}
+
+}  // namespace
+
+Status run_job(const Job& job, const RunOptions& options, const geometry::CancelToken& cancel) {
+  std::error_code ec;
+  fs::create_directories(options.out_dir, ec);
+  if (ec) return fail(ErrorCode::kIo, options.out_dir.string() + ": " + ec.message());
+
+  nlohmann::json report = {{"job", job.name}, {"job_id", options.job_id}, {"started", utc_now()}};
+  internal::StageTracker tracker(options, cancel, report);
+  internal::PipelineState ps{job, options, cancel, report};
+  auto t0 = std::chrono::steady_clock::now();
+  spdlog::info("job {} '{}': running into {}", options.job_id, job.name, options.out_dir.string());
+
+  using StageFn = Status (*)(internal::PipelineState&);
+  const std::pair<Stage, StageFn> stages[] = {
+      {Stage::kIntake, internal::stage_intake}, {Stage::kPattern, internal::stage_pattern},
+      {Stage::kMesh, internal::stage_mesh},     {Stage::kGarment, internal::stage_garment},
+      {Stage::kDesign, internal::stage_design}, {Stage::kMarker, internal::stage_marker},
+      {Stage::kPrint, internal::stage_print},   {Stage::kOutputs, internal::stage_outputs}};
+  Status result = {};
+  for (const auto& [stage, fn] : stages) {
+    result = tracker.run(stage, [&] { return fn(ps); });
+    if (!result) break;
+  }
+
+  report["finished"] = utc_now();
+  report["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  report["state"] = result ? "done" : result.error().code == ErrorCode::kCancelled ? "cancelled" : "failed";
+  if (!result) report["error"] = result.error().message;
+  if (auto st = write_report(options.out_dir, report); !st && result) result = st;
+  if (result) spdlog::info("job {} '{}': done in {:.1f} s", options.job_id, job.name, report["seconds"].get<double>());
+  else spdlog::warn("job {} '{}': {}", options.job_id, job.name, result.error().message);
+  return result;
+}
+
+}  // namespace tp::host

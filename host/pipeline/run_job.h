@@ -1,0 +1,43 @@
+// host/pipeline/run_job.h: the whole pipeline for one validated job, from pattern to printed
+// fabric, with explicit stages (STYLE.md: an enum of stages with per-job state).
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <string_view>
+
+#include "geometry/common/cancel.h"
+#include "host/common/error.h"
+#include "host/job/job.h"
+
+namespace tp::host {
+
+/// Pipeline stages in the order they run.
+enum class Stage { kIntake, kPattern, kMesh, kGarment, kDesign, kMarker, kPrint, kOutputs };
+inline constexpr Stage kAllStages[] = {Stage::kIntake, Stage::kPattern, Stage::kMesh,  Stage::kGarment,
+                                       Stage::kDesign, Stage::kMarker,  Stage::kPrint, Stage::kOutputs};
+std::string_view to_string(Stage stage);
+
+enum class StageState { kFresh, kRunning, kDone, kFailed, kCancelled, kSkipped };
+std::string_view to_string(StageState state);
+
+/// How to run a job (where outputs go, which printer, where to resume).
+struct RunOptions {
+  std::filesystem::path out_dir;
+  /// Printer to use: "" = the job's own print.printer; "none" = everything but printing.
+  std::string printer_override;
+  /// Swaths with index <= this were acknowledged by the printer in an earlier attempt.
+  std::int64_t resume_after_swath = -1;
+  /// A numeric id for logs and the printer's job-begin message (0 for command-line runs).
+  std::int64_t job_id = 0;
+  std::function<void(Stage, StageState, double seconds)> on_stage;
+  std::function<void(std::int64_t swath)> on_checkpoint;
+};
+
+/// Runs every stage of `job`. Always writes `<out_dir>/report.json` (stages, timings, figures,
+/// and the error if one stage failed); fails with that stage's error, or kCancelled.
+[[nodiscard]] Status run_job(const Job& job, const RunOptions& options, const geometry::CancelToken& cancel);
+
+}  // namespace tp::host

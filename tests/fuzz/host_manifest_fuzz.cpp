@@ -1,0 +1,15 @@
+// tests/fuzz/host_manifest_fuzz.cpp: job.json validation never crashes on any input.
+// fuzz-sources: host/job host/common
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+#include "host/job/manifest.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  std::string text(reinterpret_cast<const char*>(data), size);
+  auto job = tp::host::parse_job(text, nullptr);
+  // A failure must say where: every line names job.json.
+  if (!job && job.error().message.rfind("job.json", 0) != 0) __builtin_trap();
+  return 0;
+}
