@@ -52,3 +52,16 @@ tp_build() {
   tp_log "build: $TP_JOBS jobs"
   cmake --build "$TP_BUILD" -j "$TP_JOBS"
 }
+
+# Builds the libFuzzer targets with clang into $TP_BUILD/fuzz (only the fuzz targets and the
+# sources they name), so the suite can run each for a few seconds.
+tp_build_fuzz() {
+  local dir="$TP_BUILD/fuzz"
+  if [ ! -f "$dir/build.ninja" ]; then
+    tp_log "configure fuzz build (clang, libFuzzer): $dir"
+    cmake -S "$TP_ROOT" -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+      -DCMAKE_C_COMPILER=clang -DCMAKE_CXX_COMPILER=clang++ -DTP_FUZZ=ON -DTP_BUILD_BENCH=OFF
+  fi
+  tp_log "build fuzz targets"
+  cmake --build "$dir" -j "$TP_JOBS" --target fuzz_all
+}
