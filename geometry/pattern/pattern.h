@@ -17,10 +17,18 @@ namespace tp::geometry {
 enum class EdgeCurve { kLine, kQuadratic, kCubic, kArc, kPolyline };
 
 /// One edge of a piece outline, from its start vertex to the next edge's start vertex.
+///
+/// `control_mm` keeps the curve definition (cut files and exact lengths need it); the end points
+/// are not repeated there, they are points_mm.front() and points_mm.back():
+///  - kLine, kPolyline: empty (a polyline is defined by points_mm itself);
+///  - kQuadratic: a chain of n quadratic Beziers, c1, j1, c2, j2, ..., cn (2n-1 points, j = joints);
+///  - kCubic: a chain of n cubic Beziers, c1a, c1b, j1, c2a, c2b, j2, ..., cna, cnb (3n-1 points);
+///  - kArc: {centre, a point on the arc strictly between the ends} (a circular arc under 360 deg).
+/// points_mm is the curve flattened at a chord tolerance (geometry/pattern/curve.h).
 struct Edge {
   std::string name;                 ///< unique within the piece ("side_seam", "hem")
   EdgeCurve curve = EdgeCurve::kLine;
-  std::vector<Vec2> control_mm;     ///< Bezier control points or {arc centre}, by `curve`
+  std::vector<Vec2> control_mm;     ///< curve definition by `curve` (see above)
   std::vector<Vec2> points_mm;      ///< flattened polyline, start..end inclusive, >= 2 points
 };
 
@@ -53,7 +61,7 @@ struct Dart {
   int leg_b = 0;  ///< edge index of the second leg
 };
 
-/// A drill hole (pocket corner, dart tip marker).
+/// A drill hole (pocket corner, dart tip marker). Diameter 0 marks the point without punching it.
 struct DrillHole {
   Vec2 position_mm;
   double diameter_mm = 3;
@@ -71,7 +79,7 @@ struct Piece {
   std::vector<Edge> edges;              ///< closed outline, counter-clockwise
   std::vector<Notch> notches;
   std::optional<GrainLine> grain;
-  std::optional<int> fold_edge;         ///< edge that lay on the fold in the source (already unfolded)
+  std::optional<int> fold_edge;         ///< edge on the fold of a half piece kept folded (cut on fold)
   std::vector<InternalLine> internal_lines;
   std::vector<Dart> darts;
   std::vector<DrillHole> drill_holes;
@@ -79,6 +87,9 @@ struct Piece {
   std::string source_piece;             ///< pattern piece it was cut from ("sleeve" for "sleeve_l")
   bool mirrored = false;                ///< the mirrored copy of a left/right pair
   std::optional<Placement3d> placement;
+  /// Mirror line of a piece unfolded from a cut-on-fold half (the fold), from..to in piece mm.
+  std::optional<std::array<Vec2, 2>> fold_line_mm;
+  std::string material;                 ///< "fabric", "lining", ... as the source names it; may be empty
 };
 
 /// A span of one edge: [from_mm, to_mm] in arc length from the edge start; to_mm < 0 means the end.
@@ -101,6 +112,8 @@ struct Pattern {
   std::string size;
   std::vector<Piece> pieces;
   std::vector<Stitch> stitches;
+  /// What an importer tolerated or repaired ("piece 'back': reversed clockwise outline"), for reports.
+  std::vector<std::string> warnings;
 };
 
 /// Closed seam-line outline of a piece as one polygon (edge polylines joined, no repeats).
@@ -114,5 +127,20 @@ int find_piece(const Pattern& pattern, const std::string& name);
 
 /// Index of the edge named `name` in `piece`, or -1.
 int find_edge(const Piece& piece, const std::string& name);
+
+/// Point at arc length `s_mm` from the edge start (clamped to the edge).
+Vec2 point_along_edge(const Edge& edge, double s_mm);
+
+/// Unit tangent at arc length `s_mm` (direction of travel); zero for a degenerate edge.
+Vec2 tangent_along_edge(const Edge& edge, double s_mm);
+
+/// Resolved [from, to] of a span in mm from the edge start (to_mm < 0 means the edge end).
+std::array<double, 2> span_range_mm(const Pattern& pattern, const EdgeSpan& span);
+
+/// Length of a span in mm (0 when it names no existing edge).
+double span_length_mm(const Pattern& pattern, const EdgeSpan& span);
+
+/// "piece 'front' edge 'side' (2)" for messages; tolerant of out-of-range indices.
+std::string describe_edge(const Pattern& pattern, int piece, int edge);
 
 }  // namespace tp::geometry
