@@ -1,0 +1,244 @@
+// rip/colour/ink_converter.cpp: builds the sRGB-to-ink table with lcms2 and interpolates it per pixel.
+#include "rip/colour/ink_converter.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include <lcms2.h>
+#include <spdlog/fmt/fmt.h>
+
+#include "rip/colour/internal/lcms_handles.h"
+#include "rip/common/internal/log.h"
+
+namespace tp::rip {
+
+namespace {
+
+constexpr int kMaxInks = 15;          ///< lcms2 handles up to 15 colourants
+constexpr int kMinGrid = 9, kMaxGrid = 65;
+constexpr int kFracOne = 256;         ///< interpolation weights sum to this
+constexpr int kNodeScale = 256;       ///< node values are 8-bit ink amounts times this
+
+/// Where one 8-bit input value falls on a grid axis.
+struct AxisStep {
+  std::uint32_t offset;  ///< node index along this axis times the axis stride (in table entries)
+  std::uint32_t frac;    ///< 0..kFracOne toward the next node
+};
+
+cmsUInt32Number lcms_intent(RenderingIntent i) {
+  switch (i) {
+    case RenderingIntent::kPerceptual: return INTENT_PERCEPTUAL;
+    case RenderingIntent::kRelativeColorimetric: return INTENT_RELATIVE_COLORIMETRIC;
+    case RenderingIntent::kSaturation: return INTENT_SATURATION;
+    case RenderingIntent::kAbsoluteColorimetric: return INTENT_ABSOLUTE_COLORIMETRIC;
+  }
+  return INTENT_PERCEPTUAL;
+}
+
+bool is_black(std::string name) {
+  std::transform(name.begin(), name.end(), name.begin(), [](unsigned char c) { return std::tolower(c); });
+  return name == "black" || name == "k";
+}
+
+}  // namespace
+
+struct InkConverter::Table {
+  int channels = 0;
+  int grid = 0;
+  int limit_8bit = 0;
+  std::vector<std::string> names;
+  std::vector<std::uint16_t> nodes;  ///< grid^3 * channels, r slowest, channel fastest
+  std::array<AxisStep, 256> axis_r{}, axis_g{}, axis_b{};
+  std::uint32_t stride_r = 0, stride_g = 0, stride_b = 0;
+  // Kept for convert_exact: the same separation at full precision.
+  lcms::Profile profile;
+  lcms::Transform exact;  ///< sRGB double -> inks double (0..1), unoptimised
+  std::vector<ToneCurve> curves;
+  std::vector<bool> black;
+  double limit_fraction = 0;  ///< sum of ink fractions allowed at nodes (includes rounding margin)
+
+  /// Linearisation then the ink limit, on fractions 0..1.
+  void finish_inks(double* ink) const {
+    for (int c = 0; c < channels; ++c) {
+      ink[c] = std::clamp(ink[c], 0.0, 1.0);
+      if (static_cast<size_t>(c) < curves.size() && !curves[c].points.empty()) ink[c] = evaluate(curves[c], ink[c]);
+    }
+    double sum = 0, k = 0;
+    for (int c = 0; c < channels; ++c) (black[c] ? k : sum) += ink[c];
+    if (sum + k <= limit_fraction) return;
+    // Colour inks give way first: black carries the shadow detail and costs the least ink for it.
+    if (k >= limit_fraction) {
+      for (int c = 0; c < channels; ++c) ink[c] = black[c] ? ink[c] * limit_fraction / k : 0.0;
+      return;
+    }
+    const double s = (limit_fraction - k) / sum;
+    for (int c = 0; c < channels; ++c)
+      if (!black[c]) ink[c] *= s;
+  }
+};
+
+Result<InkConverter> InkConverter::create(const InkConverterSettings& s) {
+  lcms::install_error_handler();
+  auto t = std::make_shared<Table>();
+  t->channels = static_cast<int>(s.ink_names.size());
+  t->names = s.ink_names;
+  if (t->channels < 1 || t->channels > kMaxInks)
+    return fail(ErrorCode::kColour, fmt::format("ink converter: {} inks (1..{} supported)", t->channels, kMaxInks));
+  if (s.grid_points < kMinGrid || s.grid_points > kMaxGrid)
+    return fail(ErrorCode::kColour, fmt::format("ink converter: grid_points {} outside {}..{}", s.grid_points,
+                                                kMinGrid, kMaxGrid));
+  if (!(s.ink_limit_percent == 0 || (s.ink_limit_percent >= 100 && s.ink_limit_percent <= 100.0 * t->channels)))
+    return fail(ErrorCode::kColour, fmt::format("ink converter: ink_limit_percent {} must be 0 (none) or 100..{}",
+                                                s.ink_limit_percent, 100 * t->channels));
+  if (!s.linearisation.empty() && s.linearisation.size() != s.ink_names.size())
+    return fail(ErrorCode::kColour, fmt::format("ink converter: {} linearisation curves for {} inks",
+                                                s.linearisation.size(), s.ink_names.size()));
+  for (size_t c = 0; c < s.linearisation.size(); ++c) {
+    if (s.linearisation[c].points.empty()) continue;
+    auto ok = validate_tone_curve(s.linearisation[c], "ink '" + s.ink_names[c] + "' linearisation");
+    if (!ok) return std::unexpected(ok.error());
+  }
+  t->curves = s.linearisation;
+  for (const auto& n : s.ink_names) t->black.push_back(is_black(n));
+
+  // The printer profile: named, or the default CMYK one for a plain CMYK printer.
+  std::filesystem::path path = s.profile_path;
+  if (path.empty()) {
+    const std::vector<std::string> cmyk{"cyan", "magenta", "yellow", "black"};
+    if (s.ink_names != cmyk)
+      return fail(ErrorCode::kColour, "ink converter: inks other than cyan, magenta, yellow, black need a printer profile");
+    path = kDefaultCmykProfilePath;
+  }
+  const std::string pname = path.string();
+  std::error_code ec;
+  if (!std::filesystem::is_regular_file(path, ec))
+    return fail(ErrorCode::kColour, pname + ": no such printer profile");
+  t->profile.reset(cmsOpenProfileFromFile(pname.c_str(), "r"));
+  if (!t->profile) return fail(ErrorCode::kColour, pname + ": not a readable ICC profile");
+  if (cmsGetDeviceClass(t->profile.get()) != cmsSigOutputClass)
+    return fail(ErrorCode::kColour, pname + ": not an output (printer) profile");
+  const int prof_channels = static_cast<int>(cmsChannelsOf(cmsGetColorSpace(t->profile.get())));
+  if (prof_channels != t->channels)
+    return fail(ErrorCode::kColour, fmt::format("{}: profile has {} colourants but the printer has {} inks", pname,
+                                                prof_channels, t->channels));
+
+  lcms::Profile srgb(cmsCreate_sRGBProfile());
+  const cmsUInt32Number intent = lcms_intent(s.intent);
+  const cmsUInt32Number ink16 = CHANNELS_SH(t->channels) | BYTES_SH(2);
+  const cmsUInt32Number ink_dbl = FLOAT_SH(1) | CHANNELS_SH(t->channels) | BYTES_SH(0);
+  // Unoptimised transforms evaluate the profile's own tables, not an lcms2 precalculated grid.
+  const cmsUInt32Number flags = cmsFLAGS_BLACKPOINTCOMPENSATION | cmsFLAGS_NOOPTIMIZE | cmsFLAGS_NOCACHE;
+  lcms::Transform to_ink16(cmsCreateTransform(srgb.get(), TYPE_RGB_16, t->profile.get(), ink16, intent, flags));
+  t->exact.reset(cmsCreateTransform(srgb.get(), TYPE_RGB_DBL, t->profile.get(), ink_dbl, intent, flags));
+  if (!to_ink16 || !t->exact)
+    return fail(ErrorCode::kColour, pname + ": lcms2 cannot build an sRGB-to-ink transform for this intent");
+
+  const int g = s.grid_points, nc = t->channels;
+  t->grid = g;
+  const int limit_percent = s.ink_limit_percent > 0 ? static_cast<int>(s.ink_limit_percent) : 100 * nc;
+  t->limit_8bit = std::min(255 * nc, limit_percent * 255 / 100);
+  // Nodes stay channels/2 units under the limit: per-channel rounding after interpolation adds at
+  // most 1/2 unit each.
+  t->limit_fraction = s.ink_limit_percent > 0 ? (t->limit_8bit - 0.5 * nc) / 255.0 : static_cast<double>(nc);
+
+  // Evaluate every node through the profile in one call.
+  const size_t n_nodes = static_cast<size_t>(g) * g * g;
+  std::vector<std::uint16_t> rgb(n_nodes * 3), ink(n_nodes * nc);
+  for (int r = 0, i = 0; r < g; ++r)
+    for (int gg = 0; gg < g; ++gg)
+      for (int b = 0; b < g; ++b, ++i) {
+        rgb[3 * i + 0] = static_cast<std::uint16_t>(std::lround(r * 65535.0 / (g - 1)));
+        rgb[3 * i + 1] = static_cast<std::uint16_t>(std::lround(gg * 65535.0 / (g - 1)));
+        rgb[3 * i + 2] = static_cast<std::uint16_t>(std::lround(b * 65535.0 / (g - 1)));
+      }
+  cmsDoTransform(to_ink16.get(), rgb.data(), ink.data(), static_cast<cmsUInt32Number>(n_nodes));
+  t->nodes.resize(n_nodes * nc);
+  std::vector<double> v(nc);
+  for (size_t i = 0; i < n_nodes; ++i) {
+    for (int c = 0; c < nc; ++c) v[c] = ink[i * nc + c] / 65535.0;
+    t->finish_inks(v.data());
+    for (int c = 0; c < nc; ++c)
+      t->nodes[i * nc + c] = static_cast<std::uint16_t>(std::lround(v[c] * 255.0 * kNodeScale));
+  }
+
+  // Axis tables: input value -> (node offset, fraction), so the hot loop never divides.
+  t->stride_b = static_cast<std::uint32_t>(nc);
+  t->stride_g = t->stride_b * g;
+  t->stride_r = t->stride_g * g;
+  for (int x = 0; x < 256; ++x) {
+    const int pos = static_cast<int>(std::lround(x * (g - 1) * static_cast<double>(kFracOne) / 255.0));
+    const int idx = std::min(pos / kFracOne, g - 2);
+    const auto frac = static_cast<std::uint32_t>(pos - idx * kFracOne);
+    t->axis_r[x] = {static_cast<std::uint32_t>(idx) * t->stride_r, frac};
+    t->axis_g[x] = {static_cast<std::uint32_t>(idx) * t->stride_g, frac};
+    t->axis_b[x] = {static_cast<std::uint32_t>(idx) * t->stride_b, frac};
+  }
+  logger().debug("{}: {}^3 ink table for {} inks, limit {} (8-bit units)", pname, g, nc, t->limit_8bit);
+  return InkConverter(std::move(t));
+}
+
+int InkConverter::channels() const { return table_->channels; }
+const std::vector<std::string>& InkConverter::ink_names() const { return table_->names; }
+int InkConverter::ink_limit_8bit() const { return table_->limit_8bit; }
+
+bool InkConverter::convert_row(const geometry::Rgba8* in, int n, std::uint8_t* const* out) const {
+  const Table& t = *table_;
+  const int nc = t.channels;
+  const std::uint16_t* nodes = t.nodes.data();
+  std::uint32_t last_rgb = 0xffffffffu;  // never a real key: keys have a zero top byte
+  std::uint8_t last_ink[kMaxInks] = {};
+  bool any = false;
+  for (int i = 0; i < n; ++i) {
+    const geometry::Rgba8 p = in[i];
+    if (p.a == 0) {
+      for (int c = 0; c < nc; ++c) out[c][i] = 0;
+      continue;
+    }
+    any = true;
+    const std::uint32_t key = p.r | (p.g << 8) | (p.b << 16);
+    if (key != last_rgb) {
+      // Tetrahedral interpolation: the unit cube splits into six tetrahedra by the order of the
+      // three fractions; the colour is a convex combination of that tetrahedron's four corners.
+      last_rgb = key;
+      const AxisStep ar = t.axis_r[p.r], ag = t.axis_g[p.g], ab = t.axis_b[p.b];
+      const std::uint16_t* c0 = nodes + ar.offset + ag.offset + ab.offset;
+      const std::uint32_t fr = ar.frac, fg = ag.frac, fb = ab.frac;
+      std::uint32_t d1, d2, f1, f2, f3;  // corner offsets and the sorted fractions f1 >= f2 >= f3
+      if (fr >= fg) {
+        if (fg >= fb) { d1 = t.stride_r; d2 = t.stride_r + t.stride_g; f1 = fr; f2 = fg; f3 = fb; }
+        else if (fr >= fb) { d1 = t.stride_r; d2 = t.stride_r + t.stride_b; f1 = fr; f2 = fb; f3 = fg; }
+        else { d1 = t.stride_b; d2 = t.stride_b + t.stride_r; f1 = fb; f2 = fr; f3 = fg; }
+      } else {
+        if (fb >= fg) { d1 = t.stride_b; d2 = t.stride_b + t.stride_g; f1 = fb; f2 = fg; f3 = fr; }
+        else if (fb >= fr) { d1 = t.stride_g; d2 = t.stride_g + t.stride_b; f1 = fg; f2 = fb; f3 = fr; }
+        else { d1 = t.stride_g; d2 = t.stride_g + t.stride_r; f1 = fg; f2 = fr; f3 = fb; }
+      }
+      const std::uint32_t d3 = t.stride_r + t.stride_g + t.stride_b;
+      const std::uint32_t w0 = kFracOne - f1, w1 = f1 - f2, w2 = f2 - f3, w3 = f3;
+      for (int c = 0; c < nc; ++c) {
+        const std::uint32_t acc = c0[c] * w0 + c0[d1 + c] * w1 + c0[d2 + c] * w2 + c0[d3 + c] * w3;
+        last_ink[c] = static_cast<std::uint8_t>((acc + (kFracOne * kNodeScale / 2)) / (kFracOne * kNodeScale));
+      }
+    }
+    if (p.a == 255) {
+      for (int c = 0; c < nc; ++c) out[c][i] = last_ink[c];
+    } else {
+      // Partial coverage: scale by a/255 rounding down, so scaled inks never exceed the limit.
+      const std::uint32_t scale = p.a * 257u + 1u;
+      for (int c = 0; c < nc; ++c) out[c][i] = static_cast<std::uint8_t>((last_ink[c] * scale) >> 16);
+    }
+  }
+  return any;
+}
+
+std::vector<double> InkConverter::convert_exact(geometry::Rgba8 colour) const {
+  const Table& t = *table_;
+  const double rgb[3] = {colour.r / 255.0, colour.g / 255.0, colour.b / 255.0};
+  std::vector<double> ink(t.channels);
+  cmsDoTransform(t.exact.get(), rgb, ink.data(), 1);
+  t.finish_inks(ink.data());
+  return ink;
+}
+
+}  // namespace tp::rip

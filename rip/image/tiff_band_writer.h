@@ -1,0 +1,41 @@
+// rip/image/tiff_band_writer.h: writes a TIFF band by band, so separations of a long roll never sit
+// in memory whole.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "rip/common/error.h"
+#include "rip/image/image_io.h"
+
+namespace tp::rip {
+
+/// A TIFF open for writing top to bottom. Samples are 8-bit interleaved per pixel, holding values
+/// 0 .. 2^bits - 1 (the file stores them at `bits_per_sample`).
+class TiffBandWriter {
+ public:
+  /// Opens `path` for a width x height image with the named channels. Fails (kIo) naming the file,
+  /// (kInvalidArgument) like write_tiff.
+  [[nodiscard]] static Result<std::unique_ptr<TiffBandWriter>> open(const std::filesystem::path& path, int width_px,
+                                                                    std::int64_t height_px,
+                                                                    const std::vector<std::string>& channel_names,
+                                                                    int bits_per_sample, TiffCompression compression);
+  ~TiffBandWriter();
+
+  /// Appends `rows` rows (the next ones in order), rows `row_stride_bytes` apart.
+  /// Fails (kIo) naming the file and rows.
+  [[nodiscard]] Status write_rows(int rows, const std::uint8_t* samples, std::ptrdiff_t row_stride_bytes);
+  /// Finishes the file; fails (kIo) if rows are missing or the write fails.
+  [[nodiscard]] Status close();
+
+ private:
+  struct Impl;
+  explicit TiffBandWriter(std::unique_ptr<Impl> impl);
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace tp::rip

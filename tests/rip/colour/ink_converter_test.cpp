@@ -1,0 +1,181 @@
+// tests/rip/colour/ink_converter_test.cpp: the sRGB-to-ink table against the profile's own
+// prediction (dE00), the ink limit, partial coverage, linearisation and profile errors.
+#include "rip/colour/ink_converter.h"
+
+#include <cmath>
+#include <random>
+
+#include <gtest/gtest.h>
+#include <lcms2.h>
+
+namespace tp::rip {
+namespace {
+
+using geometry::Rgba8;
+
+/// What the printer profile says an ink combination looks like (its AToB1 table), Lab D50.
+class ProfilePrediction {
+ public:
+  explicit ProfilePrediction(int inks) {
+    prof_ = cmsOpenProfileFromFile(kDefaultCmykProfilePath, "r");
+    lab_ = cmsCreateLab4Profile(nullptr);
+    xf_ = cmsCreateTransform(prof_, CHANNELS_SH(inks) | BYTES_SH(0) | FLOAT_SH(1), lab_, TYPE_Lab_DBL,
+                             INTENT_RELATIVE_COLORIMETRIC, cmsFLAGS_NOOPTIMIZE);
+  }
+  ~ProfilePrediction() {
+    cmsDeleteTransform(xf_);
+    cmsCloseProfile(lab_);
+    cmsCloseProfile(prof_);
+  }
+  bool ok() const { return xf_ != nullptr; }
+  cmsCIELab lab(const std::vector<double>& ink) const {
+    cmsCIELab out;
+    cmsDoTransform(xf_, ink.data(), &out, 1);
+    return out;
+  }
+
+ private:
+  cmsHPROFILE prof_, lab_;
+  cmsHTRANSFORM xf_;
+};
+
+std::vector<double> table_inks(const InkConverter& conv, Rgba8 c) {
+  std::vector<std::uint8_t> out(static_cast<size_t>(conv.channels()));
+  std::vector<std::uint8_t*> planes;
+  for (auto& o : out) planes.push_back(&o);
+  conv.convert_row(&c, 1, planes.data());
+  std::vector<double> ink;
+  for (auto o : out) ink.push_back(o / 255.0);
+  return ink;
+}
+
+std::vector<Rgba8> patch_chart() {
+  std::vector<Rgba8> chart;
+  for (int r = 0; r < 6; ++r)
+    for (int g = 0; g < 6; ++g)
+      for (int b = 0; b < 6; ++b)
+        chart.push_back({static_cast<std::uint8_t>(r * 51), static_cast<std::uint8_t>(g * 51),
+                         static_cast<std::uint8_t>(b * 51), 255});
+  for (int v = 0; v < 256; v += 15) chart.push_back({static_cast<std::uint8_t>(v), static_cast<std::uint8_t>(v),
+                                                      static_cast<std::uint8_t>(v), 255});
+  std::mt19937 rng(11);
+  for (int i = 0; i < 200; ++i)
+    chart.push_back({static_cast<std::uint8_t>(rng()), static_cast<std::uint8_t>(rng()), static_cast<std::uint8_t>(rng()), 255});
+  return chart;
+}
+
+TEST(InkConverter, PatchChartLandsWithinDeltaE2OfTheProfile) {
+  for (double limit : {0.0, 300.0}) {
+    InkConverterSettings s;
+    s.ink_limit_percent = limit;
+    auto conv = InkConverter::create(s);
+    ASSERT_TRUE(conv) << conv.error().what();
+    ProfilePrediction pred(4);
+    ASSERT_TRUE(pred.ok());
+    double worst = 0, sum = 0;
+    const auto chart = patch_chart();
+    for (Rgba8 c : chart) {
+      // The profile's prediction for the exact separation versus for the table's 8-bit inks.
+      cmsCIELab want = pred.lab(conv->convert_exact(c)), got = pred.lab(table_inks(*conv, c));
+      const double de = cmsCIE2000DeltaE(&want, &got, 1, 1, 1);
+      worst = std::max(worst, de);
+      sum += de;
+    }
+    EXPECT_LE(worst, 2.0) << "limit " << limit;
+    EXPECT_LE(sum / chart.size(), 0.5) << "limit " << limit;
+    RecordProperty(limit > 0 ? "worst_de00_limited" : "worst_de00", std::to_string(worst));
+  }
+}
+
+TEST(InkConverter, TotalInkNeverExceedsTheLimit) {
+  InkConverterSettings s;
+  s.ink_limit_percent = 240;
+  auto conv = InkConverter::create(s);
+  ASSERT_TRUE(conv);
+  const int limit = conv->ink_limit_8bit();
+  EXPECT_EQ(limit, 240 * 255 / 100);
+  std::mt19937 rng(3);
+  std::vector<Rgba8> row(4096);
+  for (auto& p : row)
+    p = {static_cast<std::uint8_t>(rng() % 64), static_cast<std::uint8_t>(rng() % 64), static_cast<std::uint8_t>(rng() % 64),
+         static_cast<std::uint8_t>(rng() % 2 ? 255 : rng())};
+  row[0] = {0, 0, 0, 255};
+  std::vector<std::vector<std::uint8_t>> out(4, std::vector<std::uint8_t>(row.size()));
+  std::uint8_t* planes[4] = {out[0].data(), out[1].data(), out[2].data(), out[3].data()};
+  conv->convert_row(row.data(), static_cast<int>(row.size()), planes);
+  int max_sum = 0;
+  for (size_t i = 0; i < row.size(); ++i) {
+    const int sum = out[0][i] + out[1][i] + out[2][i] + out[3][i];
+    ASSERT_LE(sum, limit) << "pixel " << i;
+    max_sum = std::max(max_sum, sum);
+  }
+  // Black is dark enough to need the limit: it must be reached, not undercut by far.
+  EXPECT_GE(max_sum, limit - 8);
+  // Without a limit the same black uses more ink than the limit allows.
+  auto free = InkConverter::create(InkConverterSettings{});
+  ASSERT_TRUE(free);
+  auto ink = table_inks(*free, {0, 0, 0, 255});
+  EXPECT_GT((ink[0] + ink[1] + ink[2] + ink[3]) * 255, limit + 10);
+}
+
+TEST(InkConverter, CoverageScalesInksAndTransparentIsBlank) {
+  auto conv = InkConverter::create(InkConverterSettings{});
+  ASSERT_TRUE(conv);
+  Rgba8 row[3] = {{20, 90, 160, 255}, {20, 90, 160, 128}, {20, 90, 160, 0}};
+  std::uint8_t out[4][3];
+  std::uint8_t* planes[4] = {out[0], out[1], out[2], out[3]};
+  EXPECT_TRUE(conv->convert_row(row, 3, planes));
+  for (int c = 0; c < 4; ++c) {
+    EXPECT_NEAR(out[c][1], out[c][0] * 128 / 255.0, 1.0) << c;
+    EXPECT_LE(out[c][1], out[c][0] * 128 / 255.0 + 1e-9) << c;
+    EXPECT_EQ(out[c][2], 0);
+  }
+  EXPECT_GT(out[0][0], 100);  // a strong blue needs cyan
+  Rgba8 clear[2] = {{0, 0, 0, 0}, {255, 0, 0, 0}};
+  EXPECT_FALSE(conv->convert_row(clear, 2, planes));
+}
+
+TEST(InkConverter, LinearisationCurvesShapeEachInk) {
+  InkConverterSettings s;
+  // Cyan halved everywhere (a dot-gain-heavy ink), others untouched.
+  s.linearisation = {ToneCurve{{{0, 0}, {1, 0.5}}}, {}, {}, {}};
+  auto lin = InkConverter::create(s);
+  auto plain = InkConverter::create(InkConverterSettings{});
+  ASSERT_TRUE(lin && plain);
+  const Rgba8 c{40, 120, 200, 255};
+  auto a = table_inks(*plain, c), b = table_inks(*lin, c);
+  EXPECT_NEAR(b[0], a[0] / 2, 2.5 / 255);
+  EXPECT_NEAR(b[1], a[1], 1.5 / 255);
+}
+
+TEST(InkConverter, ProfileErrorsNameTheFile) {
+  InkConverterSettings missing;
+  missing.profile_path = "/nonexistent/printer.icc";
+  auto a = InkConverter::create(missing);
+  ASSERT_FALSE(a);
+  EXPECT_NE(a.error().message.find("/nonexistent/printer.icc"), std::string::npos);
+
+  InkConverterSettings rgb;  // an RGB display profile is not a printer profile
+  rgb.profile_path = "/usr/share/ghostscript/10.00.0/iccprofiles/srgb.icc";
+  auto b = InkConverter::create(rgb);
+  ASSERT_FALSE(b);
+  EXPECT_NE(b.error().message.find("srgb.icc"), std::string::npos) << b.error().message;
+
+  InkConverterSettings six;  // CMYK profile for a six-ink printer
+  six.profile_path = kDefaultCmykProfilePath;
+  six.ink_names = {"cyan", "magenta", "yellow", "black", "red", "blue"};
+  auto c = InkConverter::create(six);
+  ASSERT_FALSE(c);
+  EXPECT_NE(c.error().message.find("4 colourants"), std::string::npos) << c.error().message;
+
+  InkConverterSettings no_profile;
+  no_profile.ink_names = {"cyan", "magenta", "yellow", "black", "orange"};
+  EXPECT_FALSE(InkConverter::create(no_profile));
+
+  InkConverterSettings bad_limit;
+  bad_limit.ink_limit_percent = 50;
+  EXPECT_FALSE(InkConverter::create(bad_limit));
+}
+
+}  // namespace
+}  // namespace tp::rip
