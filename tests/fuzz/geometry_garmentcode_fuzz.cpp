@@ -1,0 +1,14 @@
+// tests/fuzz/geometry_garmentcode_fuzz.cpp: the GarmentCode specification importer on any bytes.
+#include <cstddef>
+#include <cstdint>
+#include <string_view>
+
+#include "geometry/pattern/garmentcode.h"
+#include "geometry/pattern/validate.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  std::string_view text(reinterpret_cast<const char*>(data), size);
+  auto pattern = tp::geometry::read_garmentcode(text, "fuzz.json");
+  if (pattern) (void)tp::geometry::find_pattern_problems(*pattern);
+  return 0;
+}
