@@ -1,0 +1,109 @@
+// geometry/garment/distortion.cpp: strain, area change, seam lengths and body clearance of a garment.
+#include "geometry/garment/distortion.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace tp::geometry {
+namespace {
+
+// A mesh vertex lies on a span when its arc position is within this of [from, to].
+constexpr double kSpanTolMm = 0.05;
+
+// Singular values of the 3x2 map taking the 2D triangle (p) onto the 3D one (x).
+std::pair<double, double> singular_values(const std::array<Vec2, 3>& p, const std::array<Vec3, 3>& x) {
+  Vec2 e1 = p[1] - p[0], e2 = p[2] - p[0];
+  double det = cross(e1, e2);
+  if (std::abs(det) < 1e-12) return {1, 1};
+  Vec3 d1 = x[1] - x[0], d2 = x[2] - x[0];
+  // F = [d1 d2] Dm^-1.
+  double i00 = e2.y / det, i01 = -e2.x / det, i10 = -e1.y / det, i11 = e1.x / det;
+  Vec3 f0 = d1 * i00 + d2 * i10, f1 = d1 * i01 + d2 * i11;
+  double a = dot(f0, f0), b = dot(f0, f1), c = dot(f1, f1);
+  double tr = a + c, disc = std::sqrt(std::max((a - c) * (a - c) / 4 + b * b, 0.0));
+  return {std::sqrt(std::max(tr / 2 + disc, 0.0)), std::sqrt(std::max(tr / 2 - disc, 0.0))};
+}
+
+// Chart vertices of a span, in order from its start to its end.
+std::vector<int> span_vertices(const Pattern& pattern, const Garment& g, const EdgeSpan& sp) {
+  const PieceMesh& m = g.pieces[sp.piece].mesh;
+  const auto& ev = m.edge_vertices[sp.edge];
+  double to = sp.to_mm < 0 ? edge_length_mm(pattern.pieces[sp.piece].edges[sp.edge]) : sp.to_mm;
+  std::vector<int> out;
+  double s = 0;
+  for (size_t k = 0; k < ev.size(); ++k) {
+    if (k > 0) s += norm(m.vertices_mm[ev[k]] - m.vertices_mm[ev[k - 1]]);
+    if (s >= sp.from_mm - kSpanTolMm && s <= to + kSpanTolMm) out.push_back(ev[k]);
+  }
+  return out;
+}
+
+double span_length_2d(const Pattern& pattern, const EdgeSpan& sp) {
+  double l = edge_length_mm(pattern.pieces[sp.piece].edges[sp.edge]);
+  return (sp.to_mm < 0 ? l : std::min(sp.to_mm, l)) - sp.from_mm;
+}
+
+}  // namespace
+
+DistortionReport measure_distortion(const Pattern& pattern, const Garment& g, const BodySdf* body) {
+  DistortionReport r;
+  r.vertices = static_cast<int>(g.vertices_mm.size());
+  std::vector<std::pair<double, double>> strain_area;  // (strain, 2D area)
+  double area2 = 0, area3 = 0;
+  for (const GarmentPiece& gp : g.pieces) {
+    for (const auto& t : gp.mesh.triangles) {
+      std::array<Vec2, 3> p{gp.mesh.vertices_mm[t[0]], gp.mesh.vertices_mm[t[1]], gp.mesh.vertices_mm[t[2]]};
+      std::array<Vec3, 3> x{g.vertices_mm[gp.vertex_3d[t[0]]], g.vertices_mm[gp.vertex_3d[t[1]]],
+                            g.vertices_mm[gp.vertex_3d[t[2]]]};
+      double a2 = 0.5 * std::abs(cross(p[1] - p[0], p[2] - p[0]));
+      double a3 = 0.5 * norm(cross(x[1] - x[0], x[2] - x[0]));
+      auto [s1, s2] = singular_values(p, x);
+      strain_area.push_back({std::max(std::abs(s1 - 1), std::abs(s2 - 1)), a2});
+      area2 += a2;
+      area3 += a3;
+      ++r.triangles;
+    }
+  }
+  if (area2 > 0) {
+    double sum = 0;
+    for (auto [s, a] : strain_area) sum += s * a;
+    r.strain_mean = sum / area2;
+    std::sort(strain_area.begin(), strain_area.end());
+    double acc = 0;
+    for (auto [s, a] : strain_area) {
+      acc += a;
+      r.strain_p95 = s;
+      if (acc >= 0.95 * area2) break;
+    }
+    r.strain_max = strain_area.back().first;
+    r.area_change = (area3 - area2) / area2;
+  }
+
+  for (size_t s = 0; s < pattern.stitches.size(); ++s) {
+    const Stitch& st = pattern.stitches[s];
+    SeamLength sl;
+    sl.stitch = static_cast<int>(s);
+    sl.a_mm = span_length_2d(pattern, st.a);
+    sl.b_mm = span_length_2d(pattern, st.b);
+    std::vector<int> va = span_vertices(pattern, g, st.a);
+    const GarmentPiece& gp = g.pieces[st.a.piece];
+    for (size_t k = 1; k < va.size(); ++k)
+      sl.sewn_mm += norm(g.vertices_mm[gp.vertex_3d[va[k]]] - g.vertices_mm[gp.vertex_3d[va[k - 1]]]);
+    double ref = std::max(sl.a_mm, sl.b_mm);
+    sl.diff = ref > 0 ? std::max({std::abs(sl.sewn_mm - sl.a_mm), std::abs(sl.sewn_mm - sl.b_mm), std::abs(sl.a_mm - sl.b_mm)}) / ref : 0;
+    r.seam_len_diff_max = std::max(r.seam_len_diff_max, sl.diff);
+    r.seams.push_back(sl);
+  }
+
+  if (body) {
+    r.min_clearance_mm = 1e300;
+    for (const Vec3& v : g.vertices_mm) {
+      double d = body->query(v).distance_mm;
+      r.inside_body += d < 0;
+      r.min_clearance_mm = std::min(r.min_clearance_mm, d);
+    }
+  }
+  return r;
+}
+
+}  // namespace tp::geometry

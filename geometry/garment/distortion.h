@@ -1,0 +1,40 @@
+// geometry/garment/distortion.h: how far the 3D garment departs from its 2D pattern.
+#pragma once
+
+#include <vector>
+
+#include "geometry/body/body_sdf.h"
+#include "geometry/garment/garment.h"
+#include "geometry/pattern/pattern.h"
+
+namespace tp::geometry {
+
+/// One stitch: its two spans' lengths on the pattern and the sewn seam's length in 3D.
+struct SeamLength {
+  int stitch = 0;
+  double a_mm = 0, b_mm = 0;  ///< 2D span lengths (pattern edges)
+  double sewn_mm = 0;         ///< 3D length of the seam through the garment's vertices
+  double diff = 0;            ///< max(|sewn - a|, |sewn - b|, |a - b|) / max(a, b)
+};
+
+/// Distortion of a garment against its pattern. Strain of a triangle is max(|s1 - 1|, |s2 - 1|)
+/// for the singular values s1, s2 of its 2D -> 3D map; mean and percentile are weighted by the
+/// triangles' 2D areas, so they do not depend on mesh density. All as fractions (0.02 = 2 %).
+struct DistortionReport {
+  int vertices = 0;
+  int triangles = 0;
+  double strain_mean = 0;
+  double strain_p95 = 0;
+  double strain_max = 0;
+  double area_change = 0;        ///< (3D area - 2D area) / 2D area, whole garment
+  double seam_len_diff_max = 0;  ///< largest SeamLength::diff
+  std::vector<SeamLength> seams;
+  int inside_body = 0;           ///< garment vertices with negative signed distance to the body
+  double min_clearance_mm = 0;   ///< smallest signed distance of a garment vertex to the body
+};
+
+/// Measures `garment` (built from `pattern`) against its 2D pieces; body figures only when
+/// `body` is given.
+DistortionReport measure_distortion(const Pattern& pattern, const Garment& garment, const BodySdf* body);
+
+}  // namespace tp::geometry

@@ -1,0 +1,199 @@
+// geometry/garment/internal/arap_solver.cpp: ARAP local-global cloth relaxation with body contact.
+#include "geometry/garment/internal/arap_solver.h"
+
+#include <Eigen/Sparse>
+#include <Eigen/SparseCholesky>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <thread>
+
+namespace tp::geometry::internal {
+namespace {
+
+// Vertices whose interpolated distance exceeds the clearance by this many grid steps are free.
+constexpr double kCullCells = 1.0;
+
+// Runs fn(begin, end, slot) over [0, n) split across `threads` threads (slot = thread index).
+template <class Fn>
+void parallel_for(int n, int threads, Fn&& fn) {
+  threads = std::clamp(threads, 1, 8);
+  if (threads == 1 || n < 256) { fn(0, n, 0); return; }
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t)
+    pool.emplace_back(fn, static_cast<int>(static_cast<long>(n) * t / threads),
+                      static_cast<int>(static_cast<long>(n) * (t + 1) / threads), t);
+  fn(0, static_cast<int>(static_cast<long>(n) / threads), 0);
+  for (auto& th : pool) th.join();
+}
+
+// Per-triangle constants: area and G (3x2) with F = [x0 x1 x2] G.
+struct TriConst {
+  double area = 0;
+  double g[3][2] = {};
+};
+
+TriConst triangle_constants(const std::array<Vec2, 3>& r) {
+  TriConst c;
+  Vec2 e1 = r[1] - r[0], e2 = r[2] - r[0];
+  double det = cross(e1, e2);
+  c.area = 0.5 * std::abs(det);
+  if (std::abs(det) < 1e-12) return c;
+  // Dm = [e1 e2]; Dm^-1 rows.
+  double inv[2][2] = {{e2.y / det, -e2.x / det}, {-e1.y / det, e1.x / det}};
+  for (int j = 0; j < 2; ++j) {
+    c.g[1][j] = inv[0][j];
+    c.g[2][j] = inv[1][j];
+    c.g[0][j] = -inv[0][j] - inv[1][j];
+  }
+  return c;
+}
+
+// Closest 3x2 matrix with orthonormal columns to F (columns f0, f1): F (F^T F)^{-1/2}.
+void closest_rotation(Vec3 f0, Vec3 f1, Vec3& r0, Vec3& r1) {
+  double a = dot(f0, f0), b = dot(f0, f1), d = dot(f1, f1);
+  // Eigen-decomposition of the symmetric 2x2 [a b; b d].
+  double tr = a + d, det = a * d - b * b;
+  double disc = std::sqrt(std::max(tr * tr / 4 - det, 0.0));
+  double l1 = tr / 2 + disc, l2 = std::max(tr / 2 - disc, 0.0);
+  if (l1 < 1e-20) { r0 = {1, 0, 0}; r1 = {0, 1, 0}; return; }
+  if (l2 < 1e-12 * l1) {
+    // Degenerate (collapsed) triangle: keep the dominant direction, pick any orthogonal one.
+    r0 = normalized(f0 + f1 * 0.0);
+    if (norm(r0) == 0) r0 = {1, 0, 0};
+    Vec3 o = std::abs(r0.x) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
+    r1 = normalized(cross(cross(r0, o), r0));
+    return;
+  }
+  Vec2 v1 = std::abs(b) > 1e-30 ? normalized(Vec2{b, l1 - a}) : (a >= d ? Vec2{1, 0} : Vec2{0, 1});
+  Vec2 v2 = perp(v1);
+  double s1 = 1 / std::sqrt(l1), s2 = 1 / std::sqrt(l2);
+  // (F^T F)^{-1/2} = s1 v1 v1^T + s2 v2 v2^T.
+  double m00 = s1 * v1.x * v1.x + s2 * v2.x * v2.x;
+  double m01 = s1 * v1.x * v1.y + s2 * v2.x * v2.y;
+  double m11 = s1 * v1.y * v1.y + s2 * v2.y * v2.y;
+  r0 = f0 * m00 + f1 * m01;
+  r1 = f0 * m01 + f1 * m11;
+}
+
+}  // namespace
+
+int push_out_of_body(std::vector<Vec3>& x, const BodySdf& body, double clearance_mm, int threads) {
+  std::atomic<int> moved{0};
+  parallel_for(static_cast<int>(x.size()), threads, [&](int b, int e, int) {
+    int count = 0;
+    for (int i = b; i < e; ++i) {
+      // The interpolated grid is within a cell of the truth: skip clearly free vertices.
+      if (body.approx_distance_mm(x[i]) > clearance_mm + kCullCells * body.spacing_mm()) continue;
+      BodySdf::Hit h = body.query(x[i]);
+      if (h.distance_mm >= clearance_mm || !h.near) continue;
+      x[i] = h.closest_mm + h.normal * clearance_mm;
+      ++count;
+    }
+    moved += count;
+  });
+  return moved.load();
+}
+
+Result<ClothStats> relax_cloth(ClothMesh& cloth, const BodySdf& body, const ClothParams& p, const CancelToken* cancel) {
+  const int n = static_cast<int>(cloth.x_mm.size());
+  const int nf = static_cast<int>(cloth.triangles.size());
+  ClothStats stats;
+  if (n == 0 || nf == 0) return stats;
+
+  // Constants: triangle areas and gradients, vertex areas, mean edge length.
+  std::vector<TriConst> tc(nf);
+  std::vector<double> mass(n, 0.0);
+  double edge_sum = 0;
+  for (int f = 0; f < nf; ++f) {
+    tc[f] = triangle_constants(cloth.rest_mm[f]);
+    for (int k = 0; k < 3; ++k) {
+      mass[cloth.triangles[f][k]] += tc[f].area / 3;
+      edge_sum += norm(cloth.rest_mm[f][(k + 1) % 3] - cloth.rest_mm[f][k]);
+    }
+  }
+  const double h = edge_sum / (3.0 * nf);
+  std::vector<double> w(n);
+  for (int i = 0; i < n; ++i) w[i] = p.proximal_weight * std::max(mass[i], 1e-6 * h * h) / (h * h);
+
+  // System matrix: membrane Laplacian + seam springs + proximal diagonal; factorised once.
+  std::vector<Eigen::Triplet<double>> trip;
+  trip.reserve(static_cast<size_t>(nf) * 9 + cloth.springs.size() * 4 + n);
+  for (int f = 0; f < nf; ++f) {
+    const auto& t = cloth.triangles[f];
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b)
+        trip.emplace_back(t[a], t[b], tc[f].area * (tc[f].g[a][0] * tc[f].g[b][0] + tc[f].g[a][1] * tc[f].g[b][1]));
+  }
+  for (const auto& s : cloth.springs) {
+    trip.emplace_back(s[0], s[0], p.spring_weight);
+    trip.emplace_back(s[1], s[1], p.spring_weight);
+    trip.emplace_back(s[0], s[1], -p.spring_weight);
+    trip.emplace_back(s[1], s[0], -p.spring_weight);
+  }
+  for (int i = 0; i < n; ++i) trip.emplace_back(i, i, w[i]);
+  Eigen::SparseMatrix<double> K(n, n);
+  K.setFromTriplets(trip.begin(), trip.end());
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver;
+  solver.compute(K);
+  if (solver.info() != Eigen::Success) return fail(ErrorCode::kSewing, "cloth system could not be factorised");
+
+  const int threads = std::clamp(p.threads, 1, 8);
+  std::vector<Eigen::MatrixXd> rhs_part(threads, Eigen::MatrixXd::Zero(n, 3));
+  Eigen::MatrixXd rhs(n, 3), sol(n, 3);
+  std::vector<Vec3> prev;
+  for (int it = 0; it < p.iterations; ++it) {
+    if (cancel && cancel->cancelled()) return fail(ErrorCode::kCancelled, "sewing cancelled");
+    // Local step: best rotation per triangle, accumulated into per-thread right-hand sides.
+    parallel_for(nf, threads, [&](int b, int e, int slot) {
+      Eigen::MatrixXd& r = rhs_part[slot];
+      r.setZero();
+      for (int f = b; f < e; ++f) {
+        const auto& t = cloth.triangles[f];
+        const TriConst& c = tc[f];
+        if (c.area == 0) continue;
+        Vec3 f0{}, f1{};
+        for (int k = 0; k < 3; ++k) {
+          f0 += cloth.x_mm[t[k]] * c.g[k][0];
+          f1 += cloth.x_mm[t[k]] * c.g[k][1];
+        }
+        Vec3 r0, r1;
+        closest_rotation(f0, f1, r0, r1);
+        for (int k = 0; k < 3; ++k) {
+          Vec3 v = (r0 * c.g[k][0] + r1 * c.g[k][1]) * c.area;
+          r(t[k], 0) += v.x;
+          r(t[k], 1) += v.y;
+          r(t[k], 2) += v.z;
+        }
+      }
+    });
+    rhs.setZero();
+    for (const auto& r : rhs_part) rhs += r;
+    for (int i = 0; i < n; ++i) {
+      rhs(i, 0) += w[i] * cloth.x_mm[i].x;
+      rhs(i, 1) += w[i] * cloth.x_mm[i].y - mass[i] * p.gravity_per_mm;
+      rhs(i, 2) += w[i] * cloth.x_mm[i].z;
+    }
+    // Global step: the three coordinates are independent solves with one factorisation.
+    std::thread zsolve([&] { sol.col(2) = solver.solve(rhs.col(2)); });
+    sol.col(0) = solver.solve(rhs.col(0));
+    sol.col(1) = solver.solve(rhs.col(1));
+    zsolve.join();
+
+    std::vector<Vec3>& x = cloth.x_mm;
+    prev.assign(x.begin(), x.end());
+    for (int i = 0; i < n; ++i) x[i] = Vec3{sol(i, 0), sol(i, 1), sol(i, 2)};
+    // Contact: nothing stays inside the body or closer than the clearance.
+    stats.contacts = push_out_of_body(x, body, p.clearance_mm, threads);
+    double move = 0;
+    for (int i = 0; i < n; ++i) move = std::max(move, norm(x[i] - prev[i]));
+    stats.iterations = it + 1;
+    stats.last_move_mm = move;
+    if (!std::isfinite(move)) return fail(ErrorCode::kSewing, "cloth relaxation diverged");
+    if (move < p.tolerance_mm) break;
+  }
+  return stats;
+}
+
+}  // namespace tp::geometry::internal

@@ -1,0 +1,49 @@
+// geometry/garment/sew_garment.h: the 3D garment: pieces meshed, placed, sewn and relaxed on a body.
+#pragma once
+
+#include "geometry/body/body_sdf.h"
+#include "geometry/common/cancel.h"
+#include "geometry/common/error.h"
+#include "geometry/garment/garment.h"
+#include "geometry/mesh/mesh_pattern.h"
+#include "geometry/pattern/pattern.h"
+
+namespace tp::geometry {
+
+/// Controls of sewing and relaxation.
+struct SewOptions {
+  double target_edge_mm = 20;        ///< meshing size bound (see mesh_pattern)
+  double clearance_mm = 3;           ///< garment vertices end at least this far outside the body
+  int sewing_iterations = 160;       ///< phase A: seams drawn together by stiffening springs
+  int relax_iterations = 400;        ///< phase B: seams merged, relaxed under gravity
+  double gravity_per_mm = 1e-6;      ///< weight per area relative to membrane stiffness
+  double tolerance_mm = 0.003;       ///< phase B stops when no vertex moves further per iteration
+  int threads = 2;
+};
+
+/// What sewing did, for reports and benchmarks.
+struct SewStats {
+  int sewing_iterations = 0;
+  int relax_iterations = 0;
+  double last_move_mm = 0;
+  int contacts = 0;       ///< vertices in contact with the body at the end
+  int collapsed_triangles = 0;  ///< triangles whose corners sewing merged (left out of the solve)
+  double seconds = 0;
+};
+
+/// Builds the 3D garment of `pattern` on `body`: meshes every piece (seam-matched), places
+/// the pieces around the body (initial_placement), draws stitched vertex pairs together with
+/// springs while the pieces keep their 2D shape (ARAP local-global, body contact with
+/// `clearance_mm`), then merges each stitched pair into one 3D vertex and relaxes the garment
+/// under gravity. Vertex positions are in the body frame (mm). The pieces of the result keep
+/// their 2D meshes as texture coordinates. Fails with the meshing error, kSewing when the
+/// solver fails, kCancelled when `cancel` fires.
+[[nodiscard]] Result<Garment> sew_garment(const Pattern& pattern, const BodySdf& body, const SewOptions& options,
+                                          SewStats* stats = nullptr, const CancelToken* cancel = nullptr);
+
+/// The same from an existing seam-matched mesh of the pattern (mesh_pattern).
+[[nodiscard]] Result<Garment> sew_garment(const Pattern& pattern, const PatternMesh& meshes, const BodySdf& body,
+                                          const SewOptions& options, SewStats* stats = nullptr,
+                                          const CancelToken* cancel = nullptr);
+
+}  // namespace tp::geometry
