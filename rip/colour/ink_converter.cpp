@@ -7,6 +7,9 @@
 
 #include <lcms2.h>
 #include <spdlog/fmt/fmt.h>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 #include "rip/colour/internal/lcms_handles.h"
 #include "rip/common/internal/log.h"
@@ -18,7 +21,8 @@ namespace {
 constexpr int kMaxInks = 15;          ///< lcms2 handles up to 15 colourants
 constexpr int kMinGrid = 9, kMaxGrid = 65;
 constexpr int kFracOne = 256;         ///< interpolation weights sum to this
-constexpr int kNodeScale = 256;       ///< node values are 8-bit ink amounts times this
+constexpr int kNodeScale = 128;       ///< node values are 8-bit ink amounts times this (fits int16)
+constexpr int kLane = 4;              ///< inks per 64-bit group of int16 node values
 
 /// Where one 8-bit input value falls on a grid axis.
 struct AxisStep {
@@ -48,7 +52,14 @@ struct InkConverter::Table {
   int grid = 0;
   int limit_8bit = 0;
   std::vector<std::string> names;
-  std::vector<std::uint16_t> nodes;  ///< grid^3 * channels, r slowest, channel fastest
+  int lanes = 0;                     ///< channels rounded up to kLane (node stride in int16)
+  std::vector<std::int16_t> nodes;   ///< grid^3 * lanes, r slowest, ink fastest, padding inks zero
+  /// The tetrahedron of each fraction order, indexed by (fr>=fg) | (fg>=fb)<<1 | (fr>=fb)<<2.
+  struct Tetra {
+    std::uint32_t d1, d2;    ///< offsets of the 2nd and 3rd corners (the 4th is the far corner)
+    std::uint8_t i1, i2, i3; ///< which fraction (0 r, 1 g, 2 b) is largest, middle, smallest
+  };
+  std::array<Tetra, 8> tetra{};
   std::array<AxisStep, 256> axis_r{}, axis_g{}, axis_b{};
   std::uint32_t stride_r = 0, stride_g = 0, stride_b = 0;
   // Kept for convert_exact: the same separation at full precision.
@@ -153,17 +164,18 @@ Result<InkConverter> InkConverter::create(const InkConverterSettings& s) {
         rgb[3 * i + 2] = static_cast<std::uint16_t>(std::lround(b * 65535.0 / (g - 1)));
       }
   cmsDoTransform(to_ink16.get(), rgb.data(), ink.data(), static_cast<cmsUInt32Number>(n_nodes));
-  t->nodes.resize(n_nodes * nc);
+  t->lanes = (nc + kLane - 1) / kLane * kLane;
+  t->nodes.assign(n_nodes * t->lanes, 0);
   std::vector<double> v(nc);
   for (size_t i = 0; i < n_nodes; ++i) {
     for (int c = 0; c < nc; ++c) v[c] = ink[i * nc + c] / 65535.0;
     t->finish_inks(v.data());
     for (int c = 0; c < nc; ++c)
-      t->nodes[i * nc + c] = static_cast<std::uint16_t>(std::lround(v[c] * 255.0 * kNodeScale));
+      t->nodes[i * t->lanes + c] = static_cast<std::int16_t>(std::lround(v[c] * 255.0 * kNodeScale));
   }
 
   // Axis tables: input value -> (node offset, fraction), so the hot loop never divides.
-  t->stride_b = static_cast<std::uint32_t>(nc);
+  t->stride_b = static_cast<std::uint32_t>(t->lanes);
   t->stride_g = t->stride_b * g;
   t->stride_r = t->stride_g * g;
   for (int x = 0; x < 256; ++x) {
@@ -174,6 +186,17 @@ Result<InkConverter> InkConverter::create(const InkConverterSettings& s) {
     t->axis_g[x] = {static_cast<std::uint32_t>(idx) * t->stride_g, frac};
     t->axis_b[x] = {static_cast<std::uint32_t>(idx) * t->stride_b, frac};
   }
+  // The six tetrahedra of the cube (two comparison patterns cannot occur; they get a valid one).
+  const std::uint32_t R = t->stride_r, G = t->stride_g, B = t->stride_b;
+  const Table::Tetra rgb_order{R, R + G, 0, 1, 2};
+  t->tetra = {{Table::Tetra{B, B + G, 2, 1, 0},  // 0: b > g > r
+              Table::Tetra{B, B + R, 2, 0, 1},  // 1: b > r >= g
+              Table::Tetra{G, G + B, 1, 2, 0},  // 2: g >= b > r
+              rgb_order,                        // 3: impossible
+              rgb_order,                        // 4: impossible
+              Table::Tetra{R, R + B, 0, 2, 1},  // 5: r >= b > g
+              Table::Tetra{G, G + R, 1, 0, 2},  // 6: g > r >= b
+              rgb_order}};                      // 7: r >= g >= b
   logger().debug("{}: {}^3 ink table for {} inks, limit {} (8-bit units)", pname, g, nc, t->limit_8bit);
   return InkConverter(std::move(t));
 }
@@ -184,10 +207,11 @@ int InkConverter::ink_limit_8bit() const { return table_->limit_8bit; }
 
 bool InkConverter::convert_row(const geometry::Rgba8* in, int n, std::uint8_t* const* out) const {
   const Table& t = *table_;
-  const int nc = t.channels;
-  const std::uint16_t* nodes = t.nodes.data();
+  const int nc = t.channels, lanes = t.lanes;
+  const std::int16_t* nodes = t.nodes.data();
+  const std::uint32_t far = t.stride_r + t.stride_g + t.stride_b;
   std::uint32_t last_rgb = 0xffffffffu;  // never a real key: keys have a zero top byte
-  std::uint8_t last_ink[kMaxInks] = {};
+  alignas(16) std::uint8_t last_ink[16] = {};
   bool any = false;
   for (int i = 0; i < n; ++i) {
     const geometry::Rgba8 p = in[i];
@@ -198,28 +222,43 @@ bool InkConverter::convert_row(const geometry::Rgba8* in, int n, std::uint8_t* c
     any = true;
     const std::uint32_t key = p.r | (p.g << 8) | (p.b << 16);
     if (key != last_rgb) {
-      // Tetrahedral interpolation: the unit cube splits into six tetrahedra by the order of the
-      // three fractions; the colour is a convex combination of that tetrahedron's four corners.
+      // Tetrahedral interpolation: the cube splits into six tetrahedra by the order of the three
+      // fractions; the colour is a convex combination of one tetrahedron's corners. The
+      // tetrahedron comes from a table, not branches: photographic input would mispredict them.
       last_rgb = key;
       const AxisStep ar = t.axis_r[p.r], ag = t.axis_g[p.g], ab = t.axis_b[p.b];
-      const std::uint16_t* c0 = nodes + ar.offset + ag.offset + ab.offset;
-      const std::uint32_t fr = ar.frac, fg = ag.frac, fb = ab.frac;
-      std::uint32_t d1, d2, f1, f2, f3;  // corner offsets and the sorted fractions f1 >= f2 >= f3
-      if (fr >= fg) {
-        if (fg >= fb) { d1 = t.stride_r; d2 = t.stride_r + t.stride_g; f1 = fr; f2 = fg; f3 = fb; }
-        else if (fr >= fb) { d1 = t.stride_r; d2 = t.stride_r + t.stride_b; f1 = fr; f2 = fb; f3 = fg; }
-        else { d1 = t.stride_b; d2 = t.stride_b + t.stride_r; f1 = fb; f2 = fr; f3 = fg; }
-      } else {
-        if (fb >= fg) { d1 = t.stride_b; d2 = t.stride_b + t.stride_g; f1 = fb; f2 = fg; f3 = fr; }
-        else if (fb >= fr) { d1 = t.stride_g; d2 = t.stride_g + t.stride_b; f1 = fg; f2 = fb; f3 = fr; }
-        else { d1 = t.stride_g; d2 = t.stride_g + t.stride_r; f1 = fg; f2 = fr; f3 = fb; }
-      }
-      const std::uint32_t d3 = t.stride_r + t.stride_g + t.stride_b;
+      const std::int16_t* c0 = nodes + ar.offset + ag.offset + ab.offset;
+      const std::uint32_t f[3] = {ar.frac, ag.frac, ab.frac};
+      const Table::Tetra& tt = t.tetra[(f[0] >= f[1]) | ((f[1] >= f[2]) << 1) | ((f[0] >= f[2]) << 2)];
+      const std::uint32_t f1 = f[tt.i1], f2 = f[tt.i2], f3 = f[tt.i3];
+      const std::int16_t* c1 = c0 + tt.d1;
+      const std::int16_t* c2 = c0 + tt.d2;
+      const std::int16_t* c3 = c0 + far;
       const std::uint32_t w0 = kFracOne - f1, w1 = f1 - f2, w2 = f2 - f3, w3 = f3;
-      for (int c = 0; c < nc; ++c) {
-        const std::uint32_t acc = c0[c] * w0 + c0[d1 + c] * w1 + c0[d2 + c] * w2 + c0[d3 + c] * w3;
-        last_ink[c] = static_cast<std::uint8_t>((acc + (kFracOne * kNodeScale / 2)) / (kFracOne * kNodeScale));
+#if defined(__SSE2__)
+      // Four inks at once: madd multiplies (corner, weight) int16 pairs and adds each pair.
+      const __m128i wa = _mm_set1_epi32(static_cast<int>(w0 | (w1 << 16)));
+      const __m128i wb = _mm_set1_epi32(static_cast<int>(w2 | (w3 << 16)));
+      const __m128i half = _mm_set1_epi32(kFracOne * kNodeScale / 2);
+      for (int g = 0; g < lanes; g += kLane) {
+        const __m128i a0 = _mm_loadl_epi64(reinterpret_cast<const __m128i*>(c0 + g));
+        const __m128i a1 = _mm_loadl_epi64(reinterpret_cast<const __m128i*>(c1 + g));
+        const __m128i a2 = _mm_loadl_epi64(reinterpret_cast<const __m128i*>(c2 + g));
+        const __m128i a3 = _mm_loadl_epi64(reinterpret_cast<const __m128i*>(c3 + g));
+        __m128i acc = _mm_add_epi32(_mm_madd_epi16(_mm_unpacklo_epi16(a0, a1), wa),
+                                    _mm_madd_epi16(_mm_unpacklo_epi16(a2, a3), wb));
+        acc = _mm_srli_epi32(_mm_add_epi32(acc, half), 15);  // / (kFracOne * kNodeScale)
+        const __m128i v16 = _mm_packs_epi32(acc, acc);
+        const int four = _mm_cvtsi128_si32(_mm_packus_epi16(v16, v16));
+        std::memcpy(last_ink + g, &four, 4);
       }
+#else
+      for (int c = 0; c < nc; ++c) {
+        const std::int32_t acc = c0[c] * static_cast<std::int32_t>(w0) + c1[c] * static_cast<std::int32_t>(w1) +
+                                 c2[c] * static_cast<std::int32_t>(w2) + c3[c] * static_cast<std::int32_t>(w3);
+        last_ink[c] = static_cast<std::uint8_t>((acc + kFracOne * kNodeScale / 2) / (kFracOne * kNodeScale));
+      }
+#endif
     }
     if (p.a == 255) {
       for (int c = 0; c < nc; ++c) out[c][i] = last_ink[c];

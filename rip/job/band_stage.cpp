@@ -2,14 +2,13 @@
 #include "rip/job/internal/band_stage.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cstring>
+
+#include "rip/common/internal/cpu_clock.h"
 
 namespace tp::rip {
 
 namespace {
-using Clock = std::chrono::steady_clock;
-double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 constexpr int kDropFieldBits = 21;  ///< a row of up to 2^21 bytes cannot overflow a field
 }  // namespace
 
@@ -53,22 +52,22 @@ void BandStage::run_tile(std::int64_t y0, int rows, std::int64_t band_y0, int wo
   StageTally& tally = tallies_[static_cast<size_t>(worker)];
   const int w = setup_.width_px, nc = setup_.channels;
 
-  auto t0 = Clock::now();
+  const double t0 = thread_cpu_seconds();
   std::memset(static_cast<void*>(s.rgba.data()), 0, sizeof(geometry::Rgba8) * static_cast<size_t>(w) * rows);
   source_.render_rows(y0, rows, s.rgba.data(), w);
-  tally.render_s += seconds_since(t0);
+  tally.render_s += thread_cpu_seconds() - t0;
 
   std::uint8_t* planes[16];
   for (int r = 0; r < rows; ++r) {
     const std::int64_t y = y0 + r;
-    auto t1 = Clock::now();
+    const double t1 = thread_cpu_seconds();
     // Colour: into the band buffer when it is kept, else into this thread's scratch row.
     for (int c = 0; c < nc; ++c)
       planes[c] = keep_contone_ ? band_contone_.data() + (static_cast<size_t>(y - band_y0) * nc + c) * padded_
                                 : s.planes.data() + static_cast<size_t>(c) * padded_;
     const bool inked = ink_.convert_row(s.rgba.data() + static_cast<size_t>(r) * w, w, planes);
-    auto t2 = Clock::now();
-    tally.colour_s += std::chrono::duration<double>(t2 - t1).count();
+    const double t2 = thread_cpu_seconds();
+    tally.colour_s += t2 - t1;
     if (!fused_) continue;
     for (int c = 0; c < nc; ++c) {
       std::uint8_t* out = window_.row(y, c);
@@ -81,7 +80,7 @@ void BandStage::run_tile(std::int64_t y0, int rows, std::int64_t band_y0, int wo
     }
     if (inked) window_.measure_extent(y);
     else window_.set_extent(y, 1, 0);
-    tally.screen_s += seconds_since(t2);
+    tally.screen_s += thread_cpu_seconds() - t2;
   }
 }
 
@@ -95,14 +94,14 @@ void BandStage::run(ThreadPool& pool, std::int64_t y0, int rows) {
   // Error diffusion: each ink walks the band's rows in order; inks run in parallel.
   const int nc = setup_.channels;
   pool.parallel_for(nc, [&](int c, int worker) {
-    auto t0 = Clock::now();
+    const double t0 = thread_cpu_seconds();
     StageTally& tally = tallies_[static_cast<size_t>(worker)];
     for (int r = 0; r < rows; ++r) {
       std::uint8_t* out = window_.row(y0 + r, c);
       screen_.screen_row(c, y0 + r, contone(r, c), out);
       count_drops(out, tally.drops[static_cast<size_t>(c)]);
     }
-    tally.screen_s += seconds_since(t0);
+    tally.screen_s += thread_cpu_seconds() - t0;
   });
   pool.parallel_for(rows, [&](int r, int) { window_.measure_extent(y0 + r); });
 }

@@ -82,7 +82,7 @@ struct RipStats {
   std::vector<std::array<std::uint64_t, 4>> drops;
   int threads = 1;
   double wall_s = 0;
-  double render_cpu_s = 0, colour_cpu_s = 0, screen_cpu_s = 0, swath_cpu_s = 0;  ///< summed over threads
+  double render_cpu_s = 0, colour_cpu_s = 0, screen_cpu_s = 0, swath_cpu_s = 0;  ///< thread CPU time, summed
   double sink_s = 0, separations_s = 0;  ///< wall time in the sink and in writing separations
 };
 

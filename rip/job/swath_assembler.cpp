@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cstring>
 
+#include "rip/common/internal/cpu_clock.h"
 #include "rip/swath/packbits.h"
 
 namespace tp::rip {
@@ -33,6 +34,7 @@ SwathAssembler::SwathAssembler(const PassPlan& plan, const device::PrinterModel&
             static_cast<std::uint8_t>(((1 << bits_) - 1) << (8 - bits_ - (x % per_byte) * bits_));
   }
   channel_out_.resize(static_cast<size_t>(window.channels()));
+  channel_len_.assign(static_cast<size_t>(window.channels()), 0);
   scratch_.assign(static_cast<size_t>(workers), std::vector<std::uint8_t>(static_cast<size_t>(window.row_bytes()) + 8));
   swath_s_.assign(static_cast<size_t>(workers), 0.0);
 }
@@ -47,11 +49,13 @@ std::int64_t SwathAssembler::lowest_needed_row() const { return pass_origin_row(
 
 void SwathAssembler::build_channel(const PassRows& pr, int first_byte, int row_bytes,
                                    int channel, int worker) {
-  auto t0 = Clock::now();
+  const double t0 = thread_cpu_seconds();
+  // The buffer keeps its size between swaths (no re-zeroing); the used length is tracked apart.
   std::vector<std::uint8_t>& out = channel_out_[static_cast<size_t>(channel)];
-  out.clear();
   const bool packbits = settings_.compression == device::SwathCompression::kPackBits;
-  out.reserve(static_cast<size_t>(pr.rows) * (packbits ? packbits_max_size(static_cast<size_t>(row_bytes)) : row_bytes));
+  const size_t worst = static_cast<size_t>(pr.rows) * (packbits ? packbits_max_size(static_cast<size_t>(row_bytes)) : row_bytes);
+  if (out.size() < worst) out.resize(worst);
+  size_t used = 0;
   std::uint8_t* tmp = scratch_[static_cast<size_t>(worker)].data();
   for (int r = 0; r < pr.rows; ++r) {
     const std::int64_t y = pr.first_row + static_cast<std::int64_t>(r) * plan_.nozzle_pitch_rows;
@@ -64,12 +68,14 @@ void SwathAssembler::build_channel(const PassRows& pr, int first_byte, int row_b
       src = tmp;
     }
     if (packbits) {
-      packbits_append({src, static_cast<size_t>(row_bytes)}, out);
+      used += packbits_encode({src, static_cast<size_t>(row_bytes)}, out.data() + used);
     } else {
-      out.insert(out.end(), src, src + row_bytes);
+      std::memcpy(out.data() + used, src, static_cast<size_t>(row_bytes));
+      used += static_cast<size_t>(row_bytes);
     }
   }
-  swath_s_[static_cast<size_t>(worker)] += std::chrono::duration<double>(Clock::now() - t0).count();
+  channel_len_[static_cast<size_t>(channel)] = used;
+  swath_s_[static_cast<size_t>(worker)] += thread_cpu_seconds() - t0;
 }
 
 Status SwathAssembler::emit_ready(std::int64_t rows_done, ThreadPool& pool, const SwathSink& sink, RipStats& stats) {
@@ -114,9 +120,10 @@ Status SwathAssembler::emit_ready(std::int64_t rows_done, ThreadPool& pool, cons
 
     pool.parallel_for(nc, [&](int c, int worker) { build_channel(pr, first, row_bytes, c, worker); });
     size_t total = 0;
-    for (const auto& v : channel_out_) total += v.size();
-    swath.data.reserve(total);
-    for (const auto& v : channel_out_) swath.data.insert(swath.data.end(), v.begin(), v.end());
+    for (size_t len : channel_len_) total += len;
+    swath.data.resize(total);
+    for (size_t c = 0, at = 0; c < channel_out_.size(); at += channel_len_[c], ++c)
+      std::memcpy(swath.data.data() + at, channel_out_[c].data(), channel_len_[c]);
     stats.raw_bytes += h.raw_bytes;
     stats.compressed_bytes += swath.data.size();
     ++stats.swaths_sent;

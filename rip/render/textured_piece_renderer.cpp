@@ -4,6 +4,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace tp::rip {
 
@@ -25,20 +29,44 @@ inline Rgba8 over(Rgba8 src, Rgba8 dst) {
   return {mix(src.r, dst.r), mix(src.g, dst.g), mix(src.b, dst.b), static_cast<std::uint8_t>(a)};
 }
 
-/// Bilinear texel fetch at 16.16 coordinates already wrapped into the texture.
+/// Bilinear texel fetch at 16.16 coordinates already wrapped into the texture: first along x
+/// (8-bit weights, 16-bit result halved), then along y, rounded once at the end.
 inline Rgba8 bilinear(const geometry::ImageRgba8& tex, std::int64_t u, std::int64_t v) {
   const int w = tex.width_px, h = tex.height_px;
   const int x0 = static_cast<int>(u >> kFixedShift), y0 = static_cast<int>(v >> kFixedShift);
   const int x1 = x0 + 1 == w ? 0 : x0 + 1, y1 = y0 + 1 == h ? 0 : y0 + 1;
-  const unsigned fx = static_cast<unsigned>(u >> 8) & 255u, fy = static_cast<unsigned>(v >> 8) & 255u;
+  const int fx = static_cast<int>(u >> 8) & 255, fy = static_cast<int>(v >> 8) & 255;
   const Rgba8* r0 = tex.pixels.data() + static_cast<size_t>(y0) * w;
   const Rgba8* r1 = tex.pixels.data() + static_cast<size_t>(y1) * w;
+#if defined(__SSE2__)
+  std::uint32_t a, b, c, d;
+  std::memcpy(&a, r0 + x0, 4);
+  std::memcpy(&b, r0 + x1, 4);
+  std::memcpy(&c, r1 + x0, 4);
+  std::memcpy(&d, r1 + x1, 4);
+  const __m128i zero = _mm_setzero_si128();
+  const __m128i wx = _mm_set1_epi32((256 - fx) | (fx << 16));
+  const __m128i wy = _mm_set1_epi32((256 - fy) | (fy << 16));
+  // (a, b) channel pairs as int16, madd: a * (256 - fx) + b * fx per channel; same for (c, d).
+  const __m128i ab = _mm_unpacklo_epi8(_mm_unpacklo_epi8(_mm_cvtsi32_si128(static_cast<int>(a)), _mm_cvtsi32_si128(static_cast<int>(b))), zero);
+  const __m128i cd = _mm_unpacklo_epi8(_mm_unpacklo_epi8(_mm_cvtsi32_si128(static_cast<int>(c)), _mm_cvtsi32_si128(static_cast<int>(d))), zero);
+  const __m128i top = _mm_srli_epi32(_mm_madd_epi16(ab, wx), 1), bottom = _mm_srli_epi32(_mm_madd_epi16(cd, wx), 1);
+  // (top, bottom) pairs as int16 (<= 32640), madd with the y weights, round, narrow to bytes.
+  const __m128i tb = _mm_packs_epi32(_mm_unpacklo_epi32(top, bottom), _mm_unpackhi_epi32(top, bottom));
+  __m128i acc = _mm_madd_epi16(tb, wy);
+  acc = _mm_srli_epi32(_mm_add_epi32(acc, _mm_set1_epi32(1 << 14)), 15);
+  const __m128i px16 = _mm_packs_epi32(acc, acc);
+  const std::uint32_t px = static_cast<std::uint32_t>(_mm_cvtsi128_si32(_mm_packus_epi16(px16, px16)));
+  return {static_cast<std::uint8_t>(px), static_cast<std::uint8_t>(px >> 8), static_cast<std::uint8_t>(px >> 16),
+          static_cast<std::uint8_t>(px >> 24)};
+#else
   const Rgba8 a = r0[x0], b = r0[x1], c = r1[x0], d = r1[x1];
-  const unsigned w00 = (256 - fx) * (256 - fy), w10 = fx * (256 - fy), w01 = (256 - fx) * fy, w11 = fx * fy;
-  auto mix = [&](unsigned p, unsigned q, unsigned r, unsigned s) {
-    return static_cast<std::uint8_t>((p * w00 + q * w10 + r * w01 + s * w11 + 32768u) >> 16);
+  auto mix = [&](int p, int q, int r, int s) {
+    const int top = (p * (256 - fx) + q * fx) >> 1, bottom = (r * (256 - fx) + s * fx) >> 1;
+    return static_cast<std::uint8_t>((top * (256 - fy) + bottom * fy + (1 << 14)) >> 15);
   };
   return {mix(a.r, b.r, c.r, d.r), mix(a.g, b.g, c.g, d.g), mix(a.b, b.b, c.b, d.b), mix(a.a, b.a, c.a, d.a)};
+#endif
 }
 
 inline std::int64_t wrap(std::int64_t v, std::int64_t period) {

@@ -14,7 +14,7 @@
 
 namespace tp::rip {
 
-/// Per-thread time and drop tallies (merged into RipStats at the end).
+/// Per-thread CPU time and drop tallies (merged into RipStats at the end).
 struct StageTally {
   double render_s = 0, colour_s = 0, screen_s = 0;
   std::vector<std::array<std::uint64_t, 4>> drops;

@@ -44,6 +44,7 @@ class SwathAssembler {
   std::uint32_t next_index_ = 0;
   std::vector<std::vector<std::uint8_t>> masks_;          ///< per column phase, a full row of masks
   std::vector<std::vector<std::uint8_t>> channel_out_;    ///< per channel, this swath's encoded rows
+  std::vector<size_t> channel_len_;                       ///< bytes used in channel_out_
   std::vector<std::vector<std::uint8_t>> scratch_;        ///< per worker, one masked row
   std::vector<double> swath_s_;                           ///< per worker CPU seconds
 };
