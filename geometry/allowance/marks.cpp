@@ -1,0 +1,161 @@
+// geometry/allowance/marks.cpp: label and grain arrow placement in the seam allowance.
+#include "geometry/allowance/marks.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <optional>
+
+#include "geometry/allowance/stroke_font.h"
+
+namespace tp::geometry {
+namespace {
+
+constexpr double kMargin_mm = 1.0;          // between marks and the seam or cut line
+constexpr double kRunTurn_rad = 0.07;       // a "straight" stretch turns less than about 4 degrees
+constexpr double kMinLabel_mm = 2.0;        // smallest capital height worth printing
+constexpr double kMinArrow_mm = 8.0;
+constexpr double kMaxArrow_mm = 40.0;
+constexpr double kInsideOffset_mm = 1.5;    // fallback: baseline this far inside the seam line
+
+struct Run {
+  int edge = 0;
+  Vec2 start, dir;   // dir: unit, along the outline (counter-clockwise)
+  double length = 0;
+  double width = 0;  // allowance width of the edge
+};
+
+std::vector<Run> straight_runs(const Piece& piece, const PieceAllowance& a) {
+  std::vector<Run> runs;
+  for (size_t e = 0; e < piece.edges.size(); ++e) {
+    const auto& P = piece.edges[e].points_mm;
+    size_t i = 0;
+    while (i + 1 < P.size()) {
+      const Vec2 d0 = normalized(P[i + 1] - P[i]);
+      if (norm(P[i + 1] - P[i]) <= 0) {
+        ++i;
+        continue;
+      }
+      size_t j = i + 1;
+      while (j + 1 < P.size()) {
+        const Vec2 d = P[j + 1] - P[j];
+        if (norm(d) > 0 && std::abs(std::atan2(cross(d0, d), dot(d0, d))) > kRunTurn_rad) break;
+        ++j;
+      }
+      Run r;
+      r.edge = static_cast<int>(e);
+      r.start = P[i];
+      // The chord of a gently curved run; the label sits on it.
+      r.dir = normalized(P[j] - P[i]);
+      r.length = norm(P[j] - P[i]);
+      r.width = a.width_mm[e];
+      if (r.length > 0) runs.push_back(r);
+      i = j;
+    }
+  }
+  return runs;
+}
+
+std::string upper(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return s;
+}
+
+// Glyph polylines mapped onto a run: baseline at distance `d_mm` outside the seam line (negative:
+// inside), text centred at `along_mm` from the run start, top towards the piece.
+std::vector<std::vector<Vec2>> place_text(const std::string& text, double h, const Run& r, double along_mm, double d_mm) {
+  const Vec2 n{r.dir.y, -r.dir.x};  // outward
+  const Vec2 up = -n;
+  const double w = text_width_mm(text, h);
+  const Vec2 origin = r.start + r.dir * (along_mm - 0.5 * w) + n * d_mm;
+  auto lines = text_strokes(text, h);
+  for (auto& l : lines)
+    for (Vec2& p : l) p = origin + r.dir * p.x + up * p.y;
+  return lines;
+}
+
+std::vector<std::vector<Vec2>> arrow(Vec2 c, Vec2 g, double len) {
+  const Vec2 a = c - g * (0.5 * len), b = c + g * (0.5 * len);
+  const double head = std::min(3.0, len / 4);
+  const Vec2 side = perp(g);
+  std::vector<std::vector<Vec2>> out;
+  out.push_back({a, b});
+  out.push_back({b - g * head + side * (head * 0.5), b, b - g * head - side * (head * 0.5)});
+  out.push_back({a + g * head + side * (head * 0.5), a, a + g * head - side * (head * 0.5)});
+  return out;
+}
+
+}  // namespace
+
+PieceMarks piece_marks(const Piece& piece, const PieceAllowance& allowance, const std::string& size, const Finishing& f) {
+  PieceMarks out;
+  const std::vector<Run> runs = straight_runs(piece, allowance);
+  if (runs.empty()) return out;
+  // Longer texts first; each shrinks to the smallest height before a shorter text is tried.
+  std::vector<std::string> texts;
+  std::string full = upper(piece.name);
+  if (!size.empty()) full += " " + upper(size);
+  if (!f.job_name.empty()) texts.push_back(full + " " + upper(f.job_name));
+  texts.push_back(full);
+  texts.push_back(upper(piece.name));
+
+  std::optional<Run> label_run;
+  for (const std::string& text : texts) {
+    for (double h = f.label_height_mm; h >= kMinLabel_mm - 1e-9 && !label_run; h *= 0.8) {
+      const double tw = text_width_mm(text, h);
+      const Run* best = nullptr;
+      for (const Run& r : runs)
+        if (r.width >= h + 2 * kMargin_mm && r.length >= tw + 2 * kMargin_mm && (!best || r.length > best->length)) best = &r;
+      if (!best) continue;
+      label_run = *best;
+      out.text = text;
+      out.stroke_width_mm = std::max(0.25, h / 10);
+      out.label = place_text(text, h, *best, 0.5 * best->length, 0.5 * (best->width + h));
+    }
+    if (label_run) break;
+  }
+  if (!label_run) {
+    // No allowance holds even the smallest label: just inside the seam line, small.
+    const Run* longest = &runs.front();
+    for (const Run& r : runs)
+      if (r.length > longest->length) longest = &r;
+    const std::string text = texts.back();
+    double h = f.label_height_mm;
+    while (h > kMinLabel_mm && text_width_mm(text, h) > longest->length - 2 * kMargin_mm) h *= 0.8;
+    out.text = text;
+    out.in_allowance = false;
+    out.stroke_width_mm = std::max(0.25, h / 10);
+    out.label = place_text(text, h, *longest, 0.5 * longest->length, -kInsideOffset_mm);
+    return out;
+  }
+
+  // Grain arrow: the run whose allowance holds the longest arrow along the grain.
+  if (!piece.grain || norm(piece.grain->to_mm - piece.grain->from_mm) <= 0) return out;
+  const Vec2 g = normalized(piece.grain->to_mm - piece.grain->from_mm);
+  double best_len = 0;
+  Vec2 best_centre;
+  for (const Run& r : runs) {
+    const Vec2 n{r.dir.y, -r.dir.x};
+    const double room = r.width - 2 * kMargin_mm;
+    if (room <= 0) continue;
+    const double s = std::abs(dot(g, n));
+    double len = std::min(kMaxArrow_mm, 0.4 * r.length);
+    if (s > 1e-6) len = std::min(len, room / s);
+    Vec2 centre = r.start + r.dir * (0.5 * r.length) + n * (0.5 * r.width);
+    const bool shared = r.edge == label_run->edge && norm(r.start - label_run->start) < 1e-9;
+    if (shared) {
+      // Beside the label, in the free part of the run before it.
+      const double free = 0.5 * (r.length - text_width_mm(out.text, f.label_height_mm)) - 2 * kMargin_mm;
+      len = std::min(len, free * std::max(std::abs(dot(g, r.dir)), 1e-3));
+      centre = r.start + r.dir * (0.5 * free + kMargin_mm) + n * (0.5 * r.width);
+    }
+    if (len > best_len) {
+      best_len = len;
+      best_centre = centre;
+    }
+  }
+  if (best_len >= kMinArrow_mm) out.grain_arrow = arrow(best_centre, g, best_len);
+  return out;
+}
+
+}  // namespace tp::geometry

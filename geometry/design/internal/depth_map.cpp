@@ -1,0 +1,112 @@
+// geometry/design/internal/depth_map.cpp: rasterises the garment into the projection's z-buffer.
+#include "geometry/design/internal/depth_map.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace tp::geometry::internal {
+namespace {
+
+// Cells are at least this fine, and the map at most this many cells on a side.
+constexpr double kMinCell_mm = 0.5;
+constexpr int kMaxCells = 2048;
+constexpr float kEmpty = -std::numeric_limits<float>::infinity();
+
+}  // namespace
+
+DepthMap::DepthMap(const PlanarField& field, const GarmentSurface& surface, double tolerance_mm)
+    : tolerance_mm_(tolerance_mm) {
+  const auto& V = surface.garment().vertices_mm;
+  std::vector<Vec3> pc(V.size());
+  Box2 box;
+  for (size_t i = 0; i < V.size(); ++i) {
+    pc[i] = field.plane_coordinates(V[i]);
+    box.add({pc[i].x, pc[i].y});
+  }
+  if (box.empty()) return;
+  cell_mm_ = std::max(kMinCell_mm, std::max(box.width(), box.height()) / (kMaxCells - 4));
+  origin_ = box.min - Vec2{2 * cell_mm_, 2 * cell_mm_};
+  nx_ = static_cast<int>(std::ceil(box.width() / cell_mm_)) + 5;
+  ny_ = static_cast<int>(std::ceil(box.height() / cell_mm_)) + 5;
+  depth_.assign(static_cast<size_t>(nx_) * ny_, kEmpty);
+  auto splat = [&](int ix, int iy, double d) {
+    if (ix < 0 || iy < 0 || ix >= nx_ || iy >= ny_) return;
+    float& z = depth_[static_cast<size_t>(iy) * nx_ + ix];
+    z = std::max(z, static_cast<float>(d));
+  };
+  for (const auto& t : surface.triangles_3d()) {
+    const Vec3 a = pc[static_cast<size_t>(t[0])], b = pc[static_cast<size_t>(t[1])], c = pc[static_cast<size_t>(t[2])];
+    // Corners always land, so triangles smaller than a cell still occlude.
+    for (Vec3 p : {a, b, c})
+      splat(static_cast<int>(std::floor((p.x - origin_.x) / cell_mm_)), static_cast<int>(std::floor((p.y - origin_.y) / cell_mm_)), p.z);
+    const double det = (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
+    if (std::abs(det) < 1e-12) continue;
+    const double x0 = std::min({a.x, b.x, c.x}), x1 = std::max({a.x, b.x, c.x});
+    const double y0 = std::min({a.y, b.y, c.y}), y1 = std::max({a.y, b.y, c.y});
+    const int ix0 = static_cast<int>(std::floor((x0 - origin_.x) / cell_mm_)), ix1 = static_cast<int>(std::floor((x1 - origin_.x) / cell_mm_));
+    const int iy0 = static_cast<int>(std::floor((y0 - origin_.y) / cell_mm_)), iy1 = static_cast<int>(std::floor((y1 - origin_.y) / cell_mm_));
+    for (int iy = iy0; iy <= iy1; ++iy) {
+      for (int ix = ix0; ix <= ix1; ++ix) {
+        const double px = origin_.x + (ix + 0.5) * cell_mm_, py = origin_.y + (iy + 0.5) * cell_mm_;
+        const double wb = ((px - a.x) * (c.y - a.y) - (c.x - a.x) * (py - a.y)) / det;
+        const double wc = ((b.x - a.x) * (py - a.y) - (px - a.x) * (b.y - a.y)) / det;
+        const double wa = 1 - wb - wc;
+        if (wa < 0 || wb < 0 || wc < 0) continue;
+        splat(ix, iy, wa * a.z + wb * b.z + wc * c.z);
+      }
+    }
+  }
+}
+
+double DepthMap::front(int ix, int iy) const {
+  if (ix < 0 || iy < 0 || ix >= nx_ || iy >= ny_) return kEmpty;
+  return depth_[static_cast<size_t>(iy) * nx_ + ix];
+}
+
+double DepthMap::visibility(Vec3 p) const {
+  if (nx_ == 0) return 1;
+  const double fx = (p.x - origin_.x) / cell_mm_ - 0.5, fy = (p.y - origin_.y) / cell_mm_ - 0.5;
+  const int ix = static_cast<int>(std::floor(fx)), iy = static_cast<int>(std::floor(fy));
+  const double tx = fx - ix, ty = fy - iy;
+  // A neighbouring cell's surface tilted away from the image may sit deeper by up to a cell's
+  // width times its slope; the tolerance covers the garment's own thickness and that.
+  auto lit = [&](int x, int y) { return p.z >= front(x, y) - tolerance_mm_ ? 1.0 : 0.0; };
+  return (1 - ty) * ((1 - tx) * lit(ix, iy) + tx * lit(ix + 1, iy)) + ty * ((1 - tx) * lit(ix, iy + 1) + tx * lit(ix + 1, iy + 1));
+}
+
+DepthMap::Coverage DepthMap::classify(const std::array<Vec3, 3>& t) const {
+  if (nx_ == 0) return Coverage::kVisible;
+  const Vec3 a = t[0], b = t[1], c = t[2];
+  const double det = (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
+  const double x0 = std::min({a.x, b.x, c.x}), x1 = std::max({a.x, b.x, c.x});
+  const double y0 = std::min({a.y, b.y, c.y}), y1 = std::max({a.y, b.y, c.y});
+  // One cell of margin: the per-pixel filter reads the neighbours of the cell a point is in.
+  const int ix0 = static_cast<int>(std::floor((x0 - origin_.x) / cell_mm_)) - 1, ix1 = static_cast<int>(std::floor((x1 - origin_.x) / cell_mm_)) + 1;
+  const int iy0 = static_cast<int>(std::floor((y0 - origin_.y) / cell_mm_)) - 1, iy1 = static_cast<int>(std::floor((y1 - origin_.y) / cell_mm_)) + 1;
+  bool any_lit = false, any_dark = false;
+  for (int iy = iy0; iy <= iy1; ++iy) {
+    for (int ix = ix0; ix <= ix1; ++ix) {
+      const double px = origin_.x + (ix + 0.5) * cell_mm_, py = origin_.y + (iy + 0.5) * cell_mm_;
+      double z;
+      if (std::abs(det) < 1e-12) {
+        z = std::min({a.z, b.z, c.z});
+      } else {
+        // The triangle's plane extended over the margin cells (conservative near its edges).
+        const double wb = ((px - a.x) * (c.y - a.y) - (c.x - a.x) * (py - a.y)) / det;
+        const double wc = ((b.x - a.x) * (py - a.y) - (px - a.x) * (b.y - a.y)) / det;
+        const double wa = 1 - wb - wc;
+        z = wa * a.z + wb * b.z + wc * c.z;
+        z = std::min(z, std::max({a.z, b.z, c.z}));
+        z = std::max(z, std::min({a.z, b.z, c.z}));
+      }
+      if (z >= front(ix, iy) - tolerance_mm_) any_lit = true;
+      else any_dark = true;
+    }
+  }
+  if (!any_dark) return Coverage::kVisible;
+  if (!any_lit) return Coverage::kHidden;
+  return Coverage::kPartial;
+}
+
+}  // namespace tp::geometry::internal

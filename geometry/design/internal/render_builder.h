@@ -1,0 +1,41 @@
+// geometry/design/internal/render_builder.h: builds a piece's render triangles: its chart
+// triangles and its allowance band, split until every layer's texture coordinates are affine
+// inside each triangle to within the tolerance.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "geometry/design/internal/allowance_source.h"
+#include "geometry/design/internal/garment_surface.h"
+#include "geometry/design/internal/render_data.h"
+
+namespace tp::geometry::internal {
+
+struct BuildContext {
+  const GarmentSurface* surface = nullptr;
+  const AllowanceSource* allowance = nullptr;
+  const std::vector<LayerRuntime>* layers = nullptr;
+  double tolerance_mm = 0.01;   ///< interpolation error budget on the garment surface
+  double min_edge_mm = 0.25;    ///< triangles are not split below this size
+  int max_depth = 7;            ///< nor more than this many times
+  bool blank_band = false;      ///< the allowance band is left unprinted
+};
+
+/// Statistics of one build, for the log and the benchmark.
+struct BuildStats {
+  std::size_t source_triangles = 0;
+  std::size_t band_triangles = 0;
+  std::size_t render_triangles = 0;
+  std::size_t splits = 0;
+};
+
+/// Fills out.tris / layer_start / layers / stroke_segments for `piece` from its chart triangles
+/// and the allowance band triangles `band` (piece mm).
+BuildStats build_piece_triangles(int piece, const std::vector<std::array<Vec2, 3>>& band, const BuildContext& ctx,
+                                 PieceData& out);
+
+/// Builds the window-lookup grid over out.tris.
+void build_grid(PieceData& out);
+
+}  // namespace tp::geometry::internal

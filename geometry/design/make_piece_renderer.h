@@ -1,0 +1,43 @@
+// geometry/design/make_piece_renderer.h: builds the PieceRenderer of a garment job: the design
+// sampled through the piece/garment correspondence, with textured seam allowance and marks.
+#pragma once
+
+#include <memory>
+
+#include "geometry/allowance/finishing.h"
+#include "geometry/common/cancel.h"
+#include "geometry/common/error.h"
+#include "geometry/design/design.h"
+#include "geometry/design/piece_renderer.h"
+#include "geometry/garment/garment.h"
+#include "geometry/pattern/pattern.h"
+
+namespace tp::geometry {
+
+/// Accuracy and speed knobs of the renderer (defaults suit 600 dpi printing).
+struct RenderOptions {
+  /// Largest error, on the garment, of texture coordinates interpolated inside a render triangle
+  /// (a quarter of a 600 dpi pixel).
+  double tolerance_mm = 0.01;
+  /// Render triangles are not split below this edge length (texture seams, allowance corners).
+  double min_triangle_mm = 0.25;
+  /// Trilinear taps along the major axis of a stretched pixel footprint.
+  int max_anisotropy = 8;
+  /// Threads used while building (the render calls themselves are single-threaded and reentrant).
+  int build_threads = 2;
+};
+
+/// Builds the renderer. Each piece pixel maps to (piece, triangle, barycentric) -> 3D point ->
+/// the layers' colours, composited bottom first with their opacities; the seam allowance (widths
+/// and corners from `finishing`) carries the partner piece's strip across sewn seams and the
+/// mirror of the piece's own strip at hems and open edges; labels and grain arrows are printed in
+/// the allowance when finishing.marks is kPrinted.
+///
+/// Fails (naming the piece, layer or field) when the garment does not match the pattern, the
+/// design or finishing settings are invalid, a cut outline cannot be built, or `cancel` fires.
+[[nodiscard]] Result<std::unique_ptr<PieceRenderer>> make_piece_renderer(const Pattern& pattern, const Garment& garment,
+                                                                         const Design& design, const Finishing& finishing,
+                                                                         const RenderOptions& options = {},
+                                                                         const CancelToken* cancel = nullptr);
+
+}  // namespace tp::geometry
