@@ -120,6 +120,11 @@ Result<json> parse_json(std::string_view text, const std::string& file) {
     auto pos = what.find("syntax error");
     if (pos != std::string::npos) what = what.substr(pos);
     return fail(ErrorCode::kParse, file + ":" + std::to_string(line) + ":" + std::to_string(col) + ": not valid JSON: " + what);
+  } catch (const json::exception& e) {
+    // Numbers out of range and invalid UTF-8 in strings are reported without a position.
+    std::string what = e.what();
+    auto pos = what.find("] ");
+    return fail(ErrorCode::kParse, file + ": not valid JSON: " + (pos == std::string::npos ? what : what.substr(pos + 2)));
   }
 }
 
