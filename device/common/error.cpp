@@ -17,6 +17,8 @@ std::string_view to_string(ErrorCode code) {
     case ErrorCode::kBufferFull: return "buffer_full";
     case ErrorCode::kUnsupported: return "unsupported";
     case ErrorCode::kBadState: return "bad_state";
+    case ErrorCode::kDisconnected: return "disconnected";
+    case ErrorCode::kParse: return "parse";
   }
   return "unknown";
 }

@@ -25,6 +25,8 @@ enum class ErrorCode {
   kBufferFull,
   kUnsupported,
   kBadState,
+  kDisconnected,
+  kParse,
 };
 
 /// Short stable name of a code ("crc_mismatch"), for logs and reports.

@@ -41,4 +41,9 @@ inline std::uint32_t swath_row_bytes(const SwathHeader& h) {
   return (h.width_px * h.bits_per_pixel + 7) / 8;
 }
 
+/// Bytes of a whole uncompressed swath: every channel's rows (what `raw_bytes` must say).
+inline std::uint64_t swath_raw_bytes(const SwathHeader& h) {
+  return std::uint64_t(swath_row_bytes(h)) * h.rows * h.channels;
+}
+
 }  // namespace tp::device

@@ -10,6 +10,8 @@ std::string_view to_string(ErrorCode code) {
     case ErrorCode::kScenario: return "scenario";
     case ErrorCode::kIo: return "io";
     case ErrorCode::kChild: return "child";
+    case ErrorCode::kUsb: return "usb";
+    case ErrorCode::kOutput: return "output";
   }
   return "unknown";
 }

@@ -18,6 +18,8 @@ enum class ErrorCode {
   kScenario,
   kIo,
   kChild,
+  kUsb,
+  kOutput,
 };
 
 /// Short stable name of a code, for logs and reports.

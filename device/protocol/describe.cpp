@@ -1,0 +1,189 @@
+// device/protocol/describe.cpp: textual rendering of frames and recordings.
+#include "device/protocol/describe.h"
+
+#include <cinttypes>
+#include <cstdio>
+#include <string>
+
+#include "device/protocol/messages.h"
+
+namespace tp::device {
+
+namespace {
+
+std::string quote_text(const std::string& s) {
+  std::string out = "\"";
+  for (unsigned char c : s) {
+    if (c == '"' || c == '\\') {
+      out += '\\';
+      out += static_cast<char>(c);
+    } else if (c < 0x20 || c >= 0x7F) {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\x%02x", c);
+      out += buf;
+    } else {
+      out += static_cast<char>(c);
+    }
+  }
+  return out + "\"";
+}
+
+std::string fields(const Frame& f) {
+  char b[512];
+  const auto& p = f.payload;
+  switch (f.header.type) {
+    case MessageType::kHello: {
+      auto m = decode_hello(p);
+      if (!m) return "malformed: " + m.error().message;
+      std::snprintf(b, sizeof b, " versions=%u..%u max_payload=%u host=", m->min_version, m->max_version,
+                    m->max_payload_bytes);
+      return b + quote_text(m->host);
+    }
+    case MessageType::kIdentify: {
+      auto m = decode_identify(p);
+      if (!m) return "malformed: " + m.error().message;
+      std::string inks;
+      for (const auto& i : m->inks) inks += (inks.empty() ? "" : ",") + i;
+      std::snprintf(b, sizeof b,
+                    " protocol=%u (speaks %u..%u) dpi=%dx%d nozzles=%u bpp=%u slots=%u buffer=%u width_um=%u "
+                    "max_payload=%u inks=",
+                    m->protocol_version, m->min_version, m->max_version, m->dpi_x, m->dpi_y, m->nozzles_per_ink,
+                    m->bits_per_pixel, m->swath_slots, m->swath_buffer_bytes, m->print_width_um, m->max_payload_bytes);
+      return b + inks + " model=" + quote_text(m->model) + " firmware=" + quote_text(m->firmware) +
+             " ieee1284=" + quote_text(m->ieee1284_id);
+    }
+    case MessageType::kStatusQuery:
+    case MessageType::kReportQuery:
+    case MessageType::kPause:
+    case MessageType::kResume:
+      return p.empty() ? "" : " (" + std::to_string(p.size()) + " unexpected payload bytes)";
+    case MessageType::kJobBegin: {
+      auto m = decode_job_begin(p);
+      if (!m) return "malformed: " + m.error().message;
+      std::snprintf(b, sizeof b, " job=%" PRIu64 " first_swath=%u fabric_width_px=%u name=", m->job_id,
+                    m->first_swath, m->fabric_width_px);
+      return b + quote_text(m->name);
+    }
+    case MessageType::kJobEnd: {
+      auto m = decode_job_end(p);
+      if (!m) return "malformed: " + m.error().message;
+      std::snprintf(b, sizeof b, " swaths=%u final_feed_um=%u", m->swath_count, m->final_feed_um);
+      return b;
+    }
+    case MessageType::kSwathHeader: {
+      auto m = decode_swath_header(p);
+      if (!m) return "malformed: " + m.error().message;
+      const auto& h = m->header;
+      std::snprintf(b, sizeof b,
+                    " swath=%u pass=%u dir=%s first_row=%" PRId64 " rows=%u row_step=%u x=%d width=%u ch=%u bpp=%u "
+                    "feed_um=%u comp=%s raw=%u data=%u crc=0x%08x",
+                    h.index, h.pass, h.direction == CarriageDirection::kLeftToRight ? "ltr" : "rtl", h.first_row,
+                    h.rows, h.row_step, h.x_start_px, h.width_px, h.channels, h.bits_per_pixel, h.feed_before_um,
+                    h.compression == SwathCompression::kNone ? "none" : "packbits", h.raw_bytes, m->data_bytes,
+                    m->data_crc32);
+      return b;
+    }
+    case MessageType::kSwathData: {
+      auto m = decode_swath_data(p);
+      if (!m) return "malformed: " + m.error().message;
+      std::snprintf(b, sizeof b, " swath=%u offset=%u bytes=%zu", m->swath_index, m->offset, m->data.size());
+      return b;
+    }
+    case MessageType::kFeed: {
+      auto m = decode_feed(p);
+      if (!m) return "malformed: " + m.error().message;
+      return " feed_um=" + std::to_string(m->feed_um);
+    }
+    case MessageType::kCutterCue: {
+      auto m = decode_cutter_cue(p);
+      if (!m) return "malformed: " + m.error().message;
+      std::snprintf(b, sizeof b, " cue=%u kind=%s position_um=%" PRId64 " x_um=%d", m->cue_id,
+                    std::string(to_string(m->kind)).c_str(), m->position_um, m->x_um);
+      return b;
+    }
+    case MessageType::kCueDone: {
+      auto m = decode_cue_done(p);
+      if (!m) return "malformed: " + m.error().message;
+      return " cue=" + std::to_string(m->cue_id);
+    }
+    case MessageType::kAbort: {
+      auto m = decode_abort(p);
+      if (!m) return "malformed: " + m.error().message;
+      return " reason=" + quote_text(m->reason);
+    }
+    case MessageType::kStatus: {
+      auto m = decode_status(p);
+      if (!m) return "malformed: " + m.error().message;
+      std::snprintf(b, sizeof b,
+                    " ack=%u naks=%u state=%s cond=%s job=%" PRIu64 " swath_next=%u printed_next=%u slots=%u "
+                    "free=%u fabric_um=%" PRId64 " cue_waiting=%u cues=%u last_job=%" PRIu64
+                    " outcome=%s rx_crc_errors=%u rx_gaps=%u",
+                    m->ack_seq, m->naks, std::string(to_string(m->state)).c_str(),
+                    std::string(to_string(m->condition)).c_str(), m->job_id, m->swath_next, m->printed_next,
+                    m->free_slots, m->free_bytes, m->fabric_pos_um, m->cue_waiting, m->cues_registered,
+                    m->last_job_id, std::string(to_string(m->last_outcome)).c_str(), m->rx_crc_errors, m->rx_gaps);
+      return b;
+    }
+    case MessageType::kReject: {
+      auto m = decode_reject(p);
+      if (!m) return "malformed: " + m.error().message;
+      return " refused=" + std::string(to_string(m->refused)) + " seq=" + std::to_string(m->seq) +
+             " code=" + std::string(to_string(m->code)) + " message=" + quote_text(m->message);
+    }
+    case MessageType::kJobReport: {
+      auto m = decode_job_report(p);
+      if (!m) return "malformed: " + m.error().message;
+      std::string drops;
+      for (auto d : m->drops_per_ink) drops += (drops.empty() ? "" : ",") + std::to_string(d);
+      std::snprintf(b, sizeof b,
+                    " job=%" PRIu64 " outcome=%s cond=%s first_swath=%u printed=%u feed_um=%" PRId64
+                    " time_us=%" PRIu64 " cues=%u overruns=%u drops=",
+                    m->job_id, std::string(to_string(m->outcome)).c_str(),
+                    std::string(to_string(m->condition)).c_str(), m->first_swath, m->swaths_printed,
+                    m->feed_travel_um, m->print_time_us, m->cues_fired, m->overruns);
+      return b + drops + " name=" + quote_text(m->name);
+    }
+  }
+  return " (unknown type)";
+}
+
+}  // namespace
+
+std::string describe_frame(const Frame& frame) {
+  std::string s = std::string(to_string(frame.header.type)) + " #" + std::to_string(frame.header.seq);
+  if (frame.header.flags & kFrameFlagRetransmit) s += " (resent)";
+  std::string f = fields(frame);
+  if (f.rfind("malformed", 0) == 0) return s + " " + f;
+  return s + f;
+}
+
+std::string dump_recording(const std::vector<WireRecord>& records, const DumpOptions& options) {
+  FrameDecoder to_printer, to_host;
+  std::string out;
+  for (const auto& rec : records) {
+    std::string prefix;
+    if (options.times) {
+      char t[32];
+      std::snprintf(t, sizeof t, "%.6f ", static_cast<double>(rec.time_us) / 1e6);
+      prefix = t;
+    }
+    if (rec.kind == RecordKind::kEvent) {
+      out += prefix + "--- " + std::string(rec.bytes.begin(), rec.bytes.end()) + "\n";
+      // A link event starts both byte streams afresh.
+      to_printer.reset();
+      to_host.reset();
+      continue;
+    }
+    const bool h2p = rec.kind == RecordKind::kHostToPrinter;
+    FrameDecoder& dec = h2p ? to_printer : to_host;
+    const std::string dir = h2p ? "H>P " : "P>H ";
+    dec.feed(rec.bytes);
+    while (auto r = dec.next()) {
+      if (*r) out += prefix + dir + describe_frame(**r) + "\n";
+      else out += prefix + dir + "error: " + r->error().message + "\n";
+    }
+  }
+  return out;
+}
+
+}  // namespace tp::device

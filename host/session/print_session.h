@@ -1,0 +1,161 @@
+// host/session/print_session.h: the host's print session: opens the printer (USB through
+// drivers/, plus the cutting table's GPIO lines), runs a job swath by swath within the printer's
+// credits, fires cutter cues and notch marks when the printer reaches them, reports every
+// acknowledged swath (the pipeline's checkpoint), survives an unplug/replug by reconnecting and
+// resuming from the last acknowledged swath, and returns the printer's counters at the end.
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <deque>
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "device/protocol/host_link.h"
+#include "device/protocol/messages.h"
+#include "drivers/gpio/gpio_lines.h"
+#include "drivers/usb/usb_transport.h"
+#include "geometry/common/cancel.h"
+#include "host/common/error.h"
+
+namespace tp::host {
+
+struct PrinterConfig {
+  /// "sim": the printsim printer (the process must run under printsim, see sim_reexec.h);
+  /// "usb": a real printer. Both go through the same USB and GPIO drivers.
+  std::string printer = "sim";
+  drivers::UsbOptions usb;
+  bool use_gpio = true;  ///< without GPIO, cues are acknowledged without firing a line
+  drivers::GpioConfig gpio;
+  std::chrono::milliseconds open_timeout{5000};
+  std::chrono::milliseconds reconnect_timeout{15000};  ///< how long an unplugged printer may stay away
+  std::chrono::milliseconds cutter_ready_timeout{10000};
+  std::chrono::microseconds cue_pulse{10000};          ///< width of the cue and notch pulses
+  std::chrono::milliseconds max_pause{std::chrono::minutes(30)};  ///< longest printer pause tolerated
+  std::chrono::milliseconds finish_timeout{std::chrono::minutes(10)};  ///< job end to printer idle
+  std::optional<std::filesystem::path> wire_recording;  ///< record the link for `printctl wire-dump`
+  device::LinkOptions link;
+};
+
+struct JobStart {
+  std::uint64_t job_id = 0;
+  std::string name;
+  std::uint32_t first_swath = 0;      ///< resume: swaths below this were acknowledged before
+  std::uint32_t fabric_width_px = 0;  ///< marker width at the printer's dpi_x (0: print width)
+};
+
+/// A cue as queued and, once fired, where the printer's fabric was.
+struct CueRecord {
+  std::uint32_t id = 0;
+  device::CueKind kind = device::CueKind::kCut;
+  std::int64_t position_um = 0;
+  std::int32_t x_um = 0;
+  bool fired = false;
+  std::int64_t fired_at_um = 0;
+};
+
+struct SessionStats {
+  std::uint32_t swaths_sent = 0;     ///< sent on the wire (resends after a reconnect included)
+  std::uint32_t swaths_skipped = 0;  ///< handed in but already acknowledged (resume)
+  std::uint32_t swaths_acked = 0;
+  std::uint32_t swaths_resent = 0;   ///< sent again after a reconnect
+  std::uint32_t reconnects = 0;
+  double recovery_ms_last = 0;       ///< unplug noticed -> link back and job re-attached
+  double recovery_ms_max = 0;
+  std::uint64_t bytes_sent = 0;      ///< swath data bytes, first sends only
+  double credit_wait_s = 0;          ///< time spent waiting for printer buffer space
+  double pause_s = 0;                ///< time the printer spent paused (ink, cover, media)
+  device::LinkStats link;
+};
+
+struct JobResult {
+  device::JobReportMsg report;  ///< the printer's counters
+  SessionStats stats;
+  std::vector<CueRecord> cues;
+};
+
+class PrintSession {
+ public:
+  /// Opens the printer and the GPIO lines and checks the protocol version (kPrinter errors say
+  /// which: not found, busy, incompatible).
+  static Result<std::unique_ptr<PrintSession>> open(const PrinterConfig& config);
+  /// A session over an existing transport (tests: device::FirmwareTransport), without GPIO
+  /// unless `gpio` is given.
+  static Result<std::unique_ptr<PrintSession>> open_with(std::unique_ptr<device::Transport> transport,
+                                                          const PrinterConfig& config,
+                                                          std::unique_ptr<drivers::GpioLines> gpio = nullptr);
+  ~PrintSession();
+
+  /// What the printer said it is at the handshake.
+  [[nodiscard]] const device::IdentifyMsg& printer() const;
+  /// Called with each swath index the printer acknowledges (received and checked), in order:
+  /// the pipeline stores it as the resume checkpoint.
+  void on_swath_acked(std::function<void(std::uint32_t index)> callback);
+
+  /// Opens a job on the printer. With first_swath > 0, send_swath() skips lower indices.
+  Status begin_job(const JobStart& job);
+  /// Sends one swath (indices consecutive from 0, or skipped if already acknowledged), blocking
+  /// while the printer's buffer is full. Handles cues, pauses, faults, the emergency stop and
+  /// reconnects meanwhile. Fails with kCancelled (the job is aborted on the printer) or kPrinter.
+  Status send_swath(const device::Swath& swath, const geometry::CancelToken& cancel);
+  /// Queues a cutter cue or notch mark at `position_um` of fabric feed since the job began; it
+  /// fires when the printer stops there (within one feed step).
+  Status queue_cue(device::CueKind kind, std::int64_t position_um, std::int32_t x_um = 0);
+  /// Ends the job: the printer prints what it holds, feeds `final_feed_um`, and reports.
+  Result<JobResult> end_job(std::uint32_t final_feed_um, const geometry::CancelToken& cancel);
+  /// Aborts the job on the printer (buffered swaths are discarded).
+  Status abort_job(const std::string& reason);
+
+  [[nodiscard]] const SessionStats& stats() const { return stats_; }
+  [[nodiscard]] const device::StatusMsg* printer_status() const { return link_->status(); }
+  [[nodiscard]] std::string describe() const;
+
+ private:
+  PrintSession(PrinterConfig config, std::unique_ptr<device::Transport> transport,
+               std::unique_ptr<drivers::GpioLines> gpio);
+  Status connect();
+  Status service(std::chrono::milliseconds wait, const geometry::CancelToken* cancel);
+  Status recover(const device::Error& cause);
+  Status absorb_status();
+  Status fire_cue(std::uint32_t id, const geometry::CancelToken* cancel);
+  Status check_emergency_stop();
+  Status send_cues_up_to(std::int64_t position_um);
+  Status transmit(const device::Swath& swath);
+  Status fail_job(ErrorCode code, const std::string& message);
+  std::string job_where() const;
+
+  PrinterConfig config_;
+  std::unique_ptr<device::Transport> transport_;
+  std::unique_ptr<device::Transport> recorder_;
+  std::unique_ptr<device::HostLink> link_;
+  std::unique_ptr<drivers::GpioLines> gpio_;
+  device::IdentifyMsg identity_;
+  std::function<void(std::uint32_t)> on_acked_;
+
+  bool active_ = false;
+  bool ending_ = false;
+  JobStart job_;
+  std::uint32_t acked_next_ = 0;
+  std::uint32_t printed_next_ = 0;
+  std::uint32_t swath_count_ = 0;      ///< one past the highest index handed in
+  std::int64_t fed_um_ = 0;            ///< feeds of all swaths handed in
+  std::uint32_t final_feed_um_ = 0;
+  std::deque<device::Swath> unacked_;  ///< sent, not yet acknowledged: resent after a reconnect
+  struct InBuffer {
+    std::uint32_t index;
+    std::size_t bytes;
+  };
+  std::deque<InBuffer> in_printer_;    ///< sent, not yet printed: what holds printer credit
+  std::vector<CueRecord> cues_;
+  std::uint32_t cues_sent_ = 0;        ///< cues with id <= this are on the printer
+  std::uint64_t seen_status_ = 0;
+  std::optional<std::chrono::steady_clock::time_point> paused_since_;
+  std::chrono::steady_clock::time_point last_estop_check_{};
+  SessionStats stats_;
+};
+
+}  // namespace tp::host

@@ -1,0 +1,197 @@
+// simulator/fabric/fabric_canvas.cpp: laying drops, spilling finished rows, writing TIFF and PNG.
+#include "simulator/fabric/fabric_canvas.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "device/swath/packbits.h"
+
+namespace tp::sim {
+
+namespace {
+
+// How much of red, green and blue light an ink absorbs at full coverage, for the preview.
+std::array<double, 3> ink_absorbance(const std::string& name) {
+  if (name == "cyan") return {0.95, 0.25, 0.05};
+  if (name == "magenta") return {0.10, 0.90, 0.30};
+  if (name == "yellow") return {0.02, 0.08, 0.92};
+  if (name == "black") return {0.92, 0.92, 0.92};
+  if (name == "light_cyan" || name == "light-cyan") return {0.45, 0.12, 0.02};
+  if (name == "light_magenta" || name == "light-magenta") return {0.05, 0.45, 0.15};
+  if (name == "red") return {0.05, 0.85, 0.85};
+  if (name == "orange") return {0.05, 0.55, 0.90};
+  if (name == "green") return {0.85, 0.10, 0.80};
+  if (name == "blue") return {0.85, 0.80, 0.10};
+  return {0.5, 0.5, 0.5};
+}
+
+}  // namespace
+
+Result<std::unique_ptr<FabricCanvas>> FabricCanvas::create(FabricSpec spec, const std::filesystem::path& scratch) {
+  if (spec.width_px == 0 || spec.inks.empty())
+    return fail(ErrorCode::kInvalidArgument, "fabric: width and inks must be non-zero");
+  std::FILE* f = std::fopen(scratch.c_str(), "w+b");
+  if (!f) return fail(ErrorCode::kOutput, scratch.string() + ": cannot create the fabric scratch file");
+  return std::unique_ptr<FabricCanvas>(new FabricCanvas(std::move(spec), f, scratch));
+}
+
+FabricCanvas::FabricCanvas(FabricSpec spec, std::FILE* scratch, std::filesystem::path scratch_path)
+    : spec_(std::move(spec)),
+      row_bytes_(static_cast<std::size_t>(spec_.width_px) * spec_.inks.size()),
+      scratch_(scratch),
+      scratch_path_(std::move(scratch_path)) {
+  summary_.width_px = spec_.width_px;
+}
+
+FabricCanvas::~FabricCanvas() {
+  if (scratch_) std::fclose(scratch_);
+  std::error_code ec;
+  std::filesystem::remove(scratch_path_, ec);
+}
+
+std::vector<std::uint8_t>& FabricCanvas::row(std::int64_t r) {
+  while (base_row_ + static_cast<std::int64_t>(window_.size()) <= r) window_.emplace_back(row_bytes_, 0);
+  summary_.peak_window_rows = std::max<std::uint64_t>(summary_.peak_window_rows, window_.size());
+  return window_[static_cast<std::size_t>(r - base_row_)];
+}
+
+void FabricCanvas::spill_until(std::int64_t r) {
+  std::vector<std::uint8_t> packed;
+  while (base_row_ < r) {
+    std::uint32_t len = 0;
+    packed.clear();
+    if (!window_.empty()) {
+      const auto& front = window_.front();
+      // Blank rows (most of a marker's margins) cost four bytes.
+      if (std::any_of(front.begin(), front.end(), [](std::uint8_t v) { return v != 0; })) {
+        device::packbits_encode(front, packed);
+        len = static_cast<std::uint32_t>(packed.size());
+      }
+      window_.pop_front();
+    }
+    std::fwrite(&len, sizeof len, 1, scratch_);
+    if (len) std::fwrite(packed.data(), 1, packed.size(), scratch_);
+    ++base_row_;
+    ++spilled_rows_;
+  }
+}
+
+void FabricCanvas::lay(const device::SwathHeader& h, std::span<const std::uint8_t> raw, std::int64_t fabric_row) {
+  if (fabric_row - spec_.reach_rows > base_row_) spill_until(fabric_row - spec_.reach_rows);
+  const std::size_t rb = device::swath_row_bytes(h);
+  const int bpp = h.bits_per_pixel;
+  const unsigned mask = (1u << bpp) - 1;
+  const std::size_t nch = std::min<std::size_t>(h.channels, spec_.inks.size());
+  const std::size_t stride = spec_.inks.size();
+  for (std::uint32_t i = 0; i < h.rows; ++i) {
+    const std::int64_t fr = fabric_row + static_cast<std::int64_t>(i) * h.row_step;
+    if (fr < base_row_) {
+      ++summary_.late_rows;
+      continue;
+    }
+    std::vector<std::uint8_t>& dst = row(fr);
+    for (std::size_t c = 0; c < nch; ++c) {
+      const std::uint8_t* src = raw.data() + (c * h.rows + i) * rb;
+      for (std::uint32_t px = 0; px < h.width_px; ++px) {
+        const std::size_t bit = static_cast<std::size_t>(px) * bpp;
+        const unsigned level = (src[bit / 8] >> (8 - bpp - bit % 8)) & mask;
+        if (!level) continue;
+        const std::int64_t x = h.x_start_px + static_cast<std::int64_t>(px);
+        if (x < 0 || x >= static_cast<std::int64_t>(spec_.width_px)) {
+          ++summary_.clipped_pixels;
+          continue;
+        }
+        std::uint8_t& v = dst[static_cast<std::size_t>(x) * stride + c];
+        v = static_cast<std::uint8_t>(std::min(255u, v + level));
+      }
+    }
+  }
+}
+
+Result<FabricSummary> FabricCanvas::finish(const std::filesystem::path& tif, const std::filesystem::path& png,
+                                           std::uint32_t preview_max_width) {
+  spill_until(base_row_ + static_cast<std::int64_t>(window_.size()));
+  std::fflush(scratch_);
+  const std::uint64_t height = std::max<std::uint64_t>(1, spilled_rows_);
+  summary_.height_px = height;
+  const int scale = static_cast<int>(std::max<std::uint32_t>(1, (spec_.width_px + preview_max_width - 1) / preview_max_width));
+  summary_.preview_scale = scale;
+  const std::size_t nch = spec_.inks.size();
+
+  OIIO::ImageSpec tspec(static_cast<int>(spec_.width_px), static_cast<int>(height), static_cast<int>(nch), OIIO::TypeDesc::UINT8);
+  tspec.channelnames = spec_.inks;
+  tspec.attribute("compression", "zip");
+  tspec.attribute("tiff:zipquality", 1);  // fast: rolls are long, drops compress well anyway
+  tspec.attribute("XResolution", static_cast<float>(spec_.dpi_x));
+  tspec.attribute("YResolution", static_cast<float>(spec_.dpi_y));
+  tspec.attribute("ResolutionUnit", "in");
+  tspec.attribute("ImageDescription", "tp printsim fabric: summed drop levels per ink");
+  auto tout = OIIO::ImageOutput::create(tif.string());
+  if (!tout || !tout->open(tif.string(), tspec))
+    return fail(ErrorCode::kOutput, tif.string() + ": cannot write TIFF: " + (tout ? tout->geterror() : OIIO::geterror()));
+
+  const std::uint32_t pw = (spec_.width_px + scale - 1) / scale;
+  const std::uint64_t ph = (height + scale - 1) / scale;
+  OIIO::ImageSpec pspec(static_cast<int>(pw), static_cast<int>(ph), 3, OIIO::TypeDesc::UINT8);
+  pspec.attribute("png:compressionLevel", 3);
+  auto pout = OIIO::ImageOutput::create(png.string());
+  if (!pout || !pout->open(png.string(), pspec))
+    return fail(ErrorCode::kOutput, png.string() + ": cannot write PNG: " + (pout ? pout->geterror() : OIIO::geterror()));
+
+  std::vector<std::array<double, 3>> absorb;
+  for (const auto& ink : spec_.inks) absorb.push_back(ink_absorbance(ink));
+  const double max_level = static_cast<double>((1 << spec_.bits_per_pixel) - 1);
+  std::vector<std::uint8_t> line(row_bytes_), packed;
+  std::vector<double> acc(static_cast<std::size_t>(pw) * 3, 0.0);
+  std::vector<std::uint8_t> prow(static_cast<std::size_t>(pw) * 3);
+  std::uint64_t acc_rows = 0, prow_index = 0;
+  std::rewind(scratch_);
+  for (std::uint64_t y = 0; y < height; ++y) {
+    std::uint32_t len = 0;
+    if (y < spilled_rows_ && std::fread(&len, sizeof len, 1, scratch_) != 1)
+      return fail(ErrorCode::kOutput, scratch_path_.string() + ": fabric scratch truncated at row " + std::to_string(y));
+    if (len == 0) {
+      std::fill(line.begin(), line.end(), 0);
+    } else {
+      packed.resize(len);
+      line.clear();
+      if (std::fread(packed.data(), 1, len, scratch_) != len || !device::packbits_decode(packed, row_bytes_, line))
+        return fail(ErrorCode::kOutput, scratch_path_.string() + ": fabric scratch corrupt at row " + std::to_string(y));
+    }
+    if (!tout->write_scanline(static_cast<int>(y), 0, OIIO::TypeDesc::UINT8, line.data()))
+      return fail(ErrorCode::kOutput, tif.string() + ": " + tout->geterror());
+    // Preview: subtractive mix of the inks, box-filtered scale x scale.
+    for (std::uint32_t x = 0; x < spec_.width_px; ++x) {
+      double t[3] = {1, 1, 1};
+      for (std::size_t c = 0; c < nch; ++c) {
+        const std::uint8_t v = line[static_cast<std::size_t>(x) * nch + c];
+        if (!v) continue;
+        const double cov = std::min(1.0, v / max_level);
+        for (int k = 0; k < 3; ++k) t[k] *= 1.0 - absorb[c][static_cast<std::size_t>(k)] * cov;
+      }
+      double* a = &acc[static_cast<std::size_t>(x / scale) * 3];
+      for (int k = 0; k < 3; ++k) a[k] += t[k];
+    }
+    if (++acc_rows == static_cast<std::uint64_t>(scale) || y + 1 == height) {
+      for (std::uint32_t px = 0; px < pw; ++px) {
+        const std::uint32_t cols = std::min<std::uint32_t>(scale, spec_.width_px - px * scale);
+        const double n = static_cast<double>(cols * acc_rows);
+        for (int k = 0; k < 3; ++k)
+          prow[px * 3 + static_cast<std::size_t>(k)] =
+              static_cast<std::uint8_t>(std::lround(255.0 * acc[px * 3 + static_cast<std::size_t>(k)] / n));
+      }
+      if (!pout->write_scanline(static_cast<int>(prow_index++), 0, OIIO::TypeDesc::UINT8, prow.data()))
+        return fail(ErrorCode::kOutput, png.string() + ": " + pout->geterror());
+      std::fill(acc.begin(), acc.end(), 0.0);
+      acc_rows = 0;
+    }
+  }
+  if (!tout->close()) return fail(ErrorCode::kOutput, tif.string() + ": " + tout->geterror());
+  if (!pout->close()) return fail(ErrorCode::kOutput, png.string() + ": " + pout->geterror());
+  return summary_;
+}
+
+}  // namespace tp::sim

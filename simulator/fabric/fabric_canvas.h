@@ -1,0 +1,72 @@
+// simulator/fabric/fabric_canvas.h: the virtual fabric the simulated printer lays drops on, at
+// printer resolution, one byte per ink per pixel (sum of drop levels). Memory holds only the
+// rows the head can still reach; finished rows spill to a scratch file, so a 20 m roll costs
+// disk, not memory. At the end it writes a multi-channel TIFF and an RGB preview PNG.
+#pragma once
+
+#include <cstdint>
+#include <cstdio>
+#include <deque>
+#include <filesystem>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "device/swath/swath.h"
+#include "simulator/common/error.h"
+
+namespace tp::sim {
+
+struct FabricSpec {
+  std::uint32_t width_px = 0;
+  std::vector<std::string> inks;  ///< channel names, in swath channel order
+  int dpi_x = 600;
+  int dpi_y = 600;
+  int bits_per_pixel = 2;
+  /// Rows above a swath's first row that later swaths may still reach (the head's nozzle span):
+  /// only rows further up leave memory.
+  std::int64_t reach_rows = 0;
+};
+
+struct FabricSummary {
+  std::uint32_t width_px = 0;
+  std::uint64_t height_px = 0;
+  int preview_scale = 1;               ///< fabric pixels per preview pixel, each way
+  std::uint64_t clipped_pixels = 0;    ///< drops outside the fabric width (lost)
+  std::uint64_t late_rows = 0;         ///< swath rows behind the head (should be 0)
+  std::uint64_t peak_window_rows = 0;  ///< most rows held in memory at once
+};
+
+class FabricCanvas {
+ public:
+  /// `scratch` is a file for finished rows (created, removed when the canvas goes).
+  static Result<std::unique_ptr<FabricCanvas>> create(FabricSpec spec, const std::filesystem::path& scratch);
+  ~FabricCanvas();
+  FabricCanvas(const FabricCanvas&) = delete;
+  FabricCanvas& operator=(const FabricCanvas&) = delete;
+
+  /// Adds the drops of a swath whose row 0 landed on `fabric_row`. Rows more than reach_rows
+  /// above `fabric_row` are finished (the fabric only moves forward) and leave memory.
+  void lay(const device::SwathHeader& header, std::span<const std::uint8_t> raw, std::int64_t fabric_row);
+  /// Writes `tif` (all inks, levels summed per pixel) and `png` (RGB, downscaled by an integer
+  /// factor so it is at most `preview_max_width` wide). Fails with kOutput naming the file.
+  Result<FabricSummary> finish(const std::filesystem::path& tif, const std::filesystem::path& png,
+                               std::uint32_t preview_max_width = 4096);
+
+ private:
+  FabricCanvas(FabricSpec spec, std::FILE* scratch, std::filesystem::path scratch_path);
+  void spill_until(std::int64_t row);
+  std::vector<std::uint8_t>& row(std::int64_t r);
+
+  FabricSpec spec_;
+  std::size_t row_bytes_;
+  std::FILE* scratch_;
+  std::filesystem::path scratch_path_;
+  std::deque<std::vector<std::uint8_t>> window_;
+  std::int64_t base_row_ = 0;  ///< fabric row of window_.front()
+  std::uint64_t spilled_rows_ = 0;
+  FabricSummary summary_;
+};
+
+}  // namespace tp::sim
