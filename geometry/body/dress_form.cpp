@@ -13,7 +13,7 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 // Blend radii of the smooth unions: armpit and shoulder, neck base.
-constexpr double kArmBlendMm = 22;
+constexpr double kArmBlendMm = 14;
 constexpr double kNeckBlendMm = 18;
 
 struct Level {

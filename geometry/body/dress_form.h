@@ -9,7 +9,7 @@ namespace tp::geometry {
 
 /// How finely the dress form surface is sampled.
 struct DressFormOptions {
-  double grid_spacing_mm = 7;  ///< marching-tetrahedra grid step; the mesh has edges about this long
+  double grid_spacing_mm = 9;  ///< marching-tetrahedra grid step; the mesh has edges about this long
   bool arms = true;            ///< full arms (else the form stops at the shoulders)
 };
 

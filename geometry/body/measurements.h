@@ -26,7 +26,7 @@ struct BodyMeasurements {
   double waist_to_knee_mm = 590;   ///< waist level down to knee level
   double bust_span_mm = 180;       ///< distance between the bust points
   double shoulder_slope_deg = 20;  ///< shoulder line below horizontal
-  double arm_angle_deg = 20;       ///< dress-form arms away from vertical
+  double arm_angle_deg = 45;       ///< dress-form arms away from vertical
 
   /// Height of the waist above the floor, mm (from height and back length).
   double waist_height_mm() const { return 0.859 * height_mm - back_length_mm; }

@@ -1,6 +1,7 @@
 // geometry/garment/sew_garment.cpp: seams drawn together, merged, and the garment relaxed on the body.
 #include "geometry/garment/sew_garment.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <numeric>
@@ -28,6 +29,76 @@ Result<Garment> sew_garment(const Pattern& pattern, const BodySdf& body, const S
   return sew_garment(pattern, *meshes, body, options, stats, cancel);
 }
 
+namespace {
+
+// A cloth whose seams are merged: one vertex per sewn point, and the chart-to-cloth map.
+struct MergedCloth {
+  internal::ClothMesh cloth;
+  std::vector<int> merged_id;  ///< per chart vertex (global numbering)
+  int collapsed = 0;
+};
+
+MergedCloth merge_seams(const internal::ClothMesh& cloth) {
+  std::vector<int> parent(cloth.x_mm.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  for (const auto& s : cloth.springs) parent[find_root(parent, s[0])] = find_root(parent, s[1]);
+  MergedCloth m;
+  m.merged_id.assign(cloth.x_mm.size(), -1);
+  std::vector<int> members;
+  for (size_t i = 0; i < cloth.x_mm.size(); ++i) {
+    int r = find_root(parent, static_cast<int>(i));
+    if (m.merged_id[r] < 0) {
+      m.merged_id[r] = static_cast<int>(m.cloth.x_mm.size());
+      m.cloth.x_mm.push_back({});
+      members.push_back(0);
+    }
+    m.merged_id[i] = m.merged_id[r];
+    m.cloth.x_mm[m.merged_id[i]] += cloth.x_mm[i];
+    ++members[m.merged_id[i]];
+  }
+  for (size_t v = 0; v < m.cloth.x_mm.size(); ++v) m.cloth.x_mm[v] = m.cloth.x_mm[v] / members[v];
+  for (size_t f = 0; f < cloth.triangles.size(); ++f) {
+    const auto& t = cloth.triangles[f];
+    std::array<int, 3> q{m.merged_id[t[0]], m.merged_id[t[1]], m.merged_id[t[2]]};
+    if (q[0] == q[1] || q[1] == q[2] || q[0] == q[2]) { ++m.collapsed; continue; }
+    m.cloth.triangles.push_back(q);
+    m.cloth.rest_mm.push_back(cloth.rest_mm[f]);
+  }
+  return m;
+}
+
+// 3D positions for the vertices of `fine` (one piece's 2D mesh), interpolated linearly in the
+// triangle of the coarse chart that contains each vertex (or the nearest one).
+std::vector<Vec3> interpolate_chart(const GarmentPiece& coarse, const std::vector<Vec3>& coarse_3d, const PieceMesh& fine) {
+  const auto& cv = coarse.mesh.vertices_mm;
+  std::vector<Vec3> out;
+  out.reserve(fine.vertices_mm.size());
+  for (Vec2 p : fine.vertices_mm) {
+    double best = 1e300;
+    Vec3 pos{};
+    for (const auto& t : coarse.mesh.triangles) {
+      Vec2 a = cv[t[0]], b = cv[t[1]], c = cv[t[2]];
+      double det = cross(b - a, c - a);
+      if (std::abs(det) < 1e-12) continue;
+      double l1 = cross(p - a, c - a) / det, l2 = cross(b - a, p - a) / det, l0 = 1 - l1 - l2;
+      // Outside distance in barycentric terms: 0 inside the triangle.
+      double out_by = std::max({-l0, -l1, -l2, 0.0});
+      if (out_by < best) {
+        best = out_by;
+        l0 = std::max(l0, 0.0), l1 = std::max(l1, 0.0), l2 = std::max(l2, 0.0);
+        double sum = l0 + l1 + l2;
+        pos = (coarse_3d[coarse.vertex_3d[t[0]]] * l0 + coarse_3d[coarse.vertex_3d[t[1]]] * l1 +
+               coarse_3d[coarse.vertex_3d[t[2]]] * l2) / sum;
+        if (best == 0) break;
+      }
+    }
+    out.push_back(pos);
+  }
+  return out;
+}
+
+}  // namespace
+
 Result<Garment> sew_garment(const Pattern& pattern, const PatternMesh& meshes, const BodySdf& body,
                             const SewOptions& options, SewStats* stats, const CancelToken* cancel) {
   const auto t0 = std::chrono::steady_clock::now();
@@ -41,10 +112,8 @@ Result<Garment> sew_garment(const Pattern& pattern, const PatternMesh& meshes, c
   std::vector<int> offset(pattern.pieces.size() + 1, 0);
   for (size_t p = 0; p < pattern.pieces.size(); ++p)
     offset[p + 1] = offset[p] + static_cast<int>(meshes.pieces[p].vertices_mm.size());
-  auto start = initial_placement(pattern, meshes, body);
   for (size_t p = 0; p < pattern.pieces.size(); ++p) {
     const PieceMesh& m = meshes.pieces[p];
-    cloth.x_mm.insert(cloth.x_mm.end(), start[p].begin(), start[p].end());
     for (const auto& t : m.triangles) {
       cloth.triangles.push_back({t[0] + offset[p], t[1] + offset[p], t[2] + offset[p]});
       cloth.rest_mm.push_back({m.vertices_mm[t[0]], m.vertices_mm[t[1]], m.vertices_mm[t[2]]});
@@ -57,45 +126,39 @@ Result<Garment> sew_garment(const Pattern& pattern, const PatternMesh& meshes, c
   internal::ClothParams params;
   params.clearance_mm = options.clearance_mm;
   params.threads = options.threads;
-  params.gravity_per_mm = 0;
-  params.tolerance_mm = 0;
-  const int steps = static_cast<int>(std::size(kSpringWeights));
-  for (int k = 0; k < steps && !cloth.springs.empty(); ++k) {
-    params.spring_weight = kSpringWeights[k];
-    params.iterations = options.sewing_iterations / steps;
-    auto r = internal::relax_cloth(cloth, body, params, cancel);
-    if (!r) return std::unexpected(r.error().with_context("pattern '" + pattern.name + "': sewing"));
-    st.sewing_iterations += r->iterations;
+  const bool two_level = options.coarse_factor >= 1.5;
+  if (two_level) {
+    // Coarse level: the whole sewing on a coarser mesh, then its shape carried over.
+    SewOptions coarse_opt = options;
+    coarse_opt.target_edge_mm = options.target_edge_mm * options.coarse_factor;
+    coarse_opt.coarse_factor = 0;
+    SewStats coarse_stats;
+    auto coarse = sew_garment(pattern, body, coarse_opt, &coarse_stats, cancel);
+    if (!coarse) return fail(coarse.error());
+    st.sewing_iterations = coarse_stats.sewing_iterations;
+    for (size_t p = 0; p < pattern.pieces.size(); ++p) {
+      auto pos = interpolate_chart(coarse->pieces[p], coarse->vertices_mm, meshes.pieces[p]);
+      cloth.x_mm.insert(cloth.x_mm.end(), pos.begin(), pos.end());
+    }
+  } else {
+    auto start = initial_placement(pattern, meshes, body);
+    for (auto& piece_start : start) cloth.x_mm.insert(cloth.x_mm.end(), piece_start.begin(), piece_start.end());
+    params.gravity_per_mm = 0;
+    params.tolerance_mm = 0;
+    const int steps = static_cast<int>(std::size(kSpringWeights));
+    for (int k = 0; k < steps && !cloth.springs.empty(); ++k) {
+      params.spring_weight = kSpringWeights[k];
+      params.iterations = options.sewing_iterations / steps;
+      auto r = internal::relax_cloth(cloth, body, params, cancel);
+      if (!r) return fail(r.error().with_context("pattern '" + pattern.name + "': sewing"));
+      st.sewing_iterations += r->iterations;
+    }
   }
 
   // Merge: every stitched pair (transitively) becomes one 3D vertex at the pair's mean.
-  std::vector<int> parent(cloth.x_mm.size());
-  std::iota(parent.begin(), parent.end(), 0);
-  for (const auto& s : cloth.springs) parent[find_root(parent, s[0])] = find_root(parent, s[1]);
-  std::vector<int> merged_id(cloth.x_mm.size(), -1);
-  internal::ClothMesh merged;
-  std::vector<int> members;
-  for (size_t i = 0; i < cloth.x_mm.size(); ++i) {
-    int r = find_root(parent, static_cast<int>(i));
-    if (merged_id[r] < 0) {
-      merged_id[r] = static_cast<int>(merged.x_mm.size());
-      merged.x_mm.push_back({});
-      members.push_back(0);
-    }
-    merged_id[i] = merged_id[r];
-    merged.x_mm[merged_id[i]] += cloth.x_mm[i];
-    ++members[merged_id[i]];
-  }
-  for (size_t v = 0; v < merged.x_mm.size(); ++v) merged.x_mm[v] = merged.x_mm[v] / members[v];
-  int degenerate = 0;
-  for (size_t f = 0; f < cloth.triangles.size(); ++f) {
-    const auto& t = cloth.triangles[f];
-    std::array<int, 3> m{merged_id[t[0]], merged_id[t[1]], merged_id[t[2]]};
-    if (m[0] == m[1] || m[1] == m[2] || m[0] == m[2]) { ++degenerate; continue; }
-    merged.triangles.push_back(m);
-    merged.rest_mm.push_back(cloth.rest_mm[f]);
-  }
-  st.collapsed_triangles = degenerate;
+  MergedCloth mc = merge_seams(cloth);
+  internal::ClothMesh& merged = mc.cloth;
+  st.collapsed_triangles = mc.collapsed;
 
   // Phase B: relax the sewn garment under gravity until it settles.
   params.spring_weight = 0;
@@ -103,7 +166,7 @@ Result<Garment> sew_garment(const Pattern& pattern, const PatternMesh& meshes, c
   params.iterations = options.relax_iterations;
   params.tolerance_mm = options.tolerance_mm;
   auto r = internal::relax_cloth(merged, body, params, cancel);
-  if (!r) return std::unexpected(r.error().with_context("pattern '" + pattern.name + "': relaxing"));
+  if (!r) return fail(r.error().with_context("pattern '" + pattern.name + "': relaxing"));
   st.relax_iterations = r->iterations;
   st.last_move_mm = r->last_move_mm;
   st.contacts = r->contacts;
@@ -114,7 +177,7 @@ Result<Garment> sew_garment(const Pattern& pattern, const PatternMesh& meshes, c
     GarmentPiece gp;
     gp.piece = static_cast<int>(p);
     gp.mesh = meshes.pieces[p];
-    for (int v = offset[p]; v < offset[p + 1]; ++v) gp.vertex_3d.push_back(merged_id[v]);
+    for (int v = offset[p]; v < offset[p + 1]; ++v) gp.vertex_3d.push_back(mc.merged_id[v]);
     g.pieces.push_back(std::move(gp));
   }
   st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -13,10 +13,14 @@ namespace tp::geometry {
 /// Controls of sewing and relaxation.
 struct SewOptions {
   double target_edge_mm = 20;        ///< meshing size bound (see mesh_pattern)
+  /// Sew first on a mesh this many times coarser, then refine (0 or < 1.5: single level).
+  double coarse_factor = 2.5;
   double clearance_mm = 3;           ///< garment vertices end at least this far outside the body
   int sewing_iterations = 160;       ///< phase A: seams drawn together by stiffening springs
   int relax_iterations = 400;        ///< phase B: seams merged, relaxed under gravity
-  double gravity_per_mm = 1e-6;      ///< weight per area relative to membrane stiffness
+  /// Weight per area relative to membrane stiffness. Contact is frictionless, so any weight
+  /// slides a garment down the body until it is stretched over it: 0 keeps the placement's height.
+  double gravity_per_mm = 0;
   double tolerance_mm = 0.003;       ///< phase B stops when no vertex moves further per iteration
   int threads = 2;
 };
@@ -35,7 +39,9 @@ struct SewStats {
 /// the pieces around the body (initial_placement), draws stitched vertex pairs together with
 /// springs while the pieces keep their 2D shape (ARAP local-global, body contact with
 /// `clearance_mm`), then merges each stitched pair into one 3D vertex and relaxes the garment
-/// under gravity. Vertex positions are in the body frame (mm). The pieces of the result keep
+/// under gravity. With coarse_factor, all of this first runs on a coarser mesh of the same
+/// pattern, whose result is interpolated (through the 2D charts) onto the fine mesh, which is
+/// then only relaxed: low-frequency motion converges on the coarse mesh. Vertex positions are in the body frame (mm). The pieces of the result keep
 /// their 2D meshes as texture coordinates. Fails with the meshing error, kSewing when the
 /// solver fails, kCancelled when `cancel` fires.
 [[nodiscard]] Result<Garment> sew_garment(const Pattern& pattern, const BodySdf& body, const SewOptions& options,

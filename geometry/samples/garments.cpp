@@ -9,7 +9,7 @@
 namespace tp::geometry::samples {
 
 const std::vector<std::string>& garment_names() {
-  static const std::vector<std::string> names{"skirt8"};
+  static const std::vector<std::string> names{"simple_top", "blouse", "dress", "skirt8"};
   return names;
 }
 
@@ -18,6 +18,9 @@ Result<Pattern> draft_garment(std::string_view name, const BodyMeasurements& m, 
   Result<Pattern> p = fail(ErrorCode::kInvalidArgument,
                            "unknown garment '" + std::string(name) + "' (simple_top, blouse, dress, skirt8)");
   if (name == "skirt8") p = internal::draft_skirt8(m);
+  else if (name == "simple_top") p = internal::draft_simple_top(m);
+  else if (name == "blouse") p = internal::draft_blouse(m);
+  else if (name == "dress") p = internal::draft_dress(m);
   if (p) p->size = size_label;
   return p;
 }

@@ -13,7 +13,7 @@ namespace tp::geometry::internal {
 namespace {
 
 // Vertices whose interpolated distance exceeds the clearance by this many grid steps are free.
-constexpr double kCullCells = 1.0;
+constexpr double kCullCells = 0.4;
 
 // Runs fn(begin, end, slot) over [0, n) split across `threads` threads (slot = thread index).
 template <class Fn>

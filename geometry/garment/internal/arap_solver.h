@@ -24,7 +24,7 @@ struct ClothMesh {
 struct ClothParams {
   double spring_weight = 0;        ///< seam spring stiffness (0: no springs)
   double proximal_weight = 0.02;   ///< pull towards the previous iterate (damping), per vertex area / h^2
-  double gravity_per_mm = 1e-6;    ///< body force per unit area, relative to membrane stiffness (-y)
+  double gravity_per_mm = 0;    ///< body force per unit area, relative to membrane stiffness (-y)
   double clearance_mm = 3;         ///< vertices are pushed at least this far out of the body
   int iterations = 100;
   double tolerance_mm = 0.005;     ///< stop when no vertex moves further in one iteration

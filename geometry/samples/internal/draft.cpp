@@ -146,6 +146,13 @@ Piece mirror_piece(const Piece& src, const std::string& name) {
   for (InternalLine& l : p.internal_lines)
     for (Vec2& q : l.points_mm) q.x = -q.x;
   for (DrillHole& h : p.drill_holes) h.position_mm.x = -h.position_mm.x;
+  // The mirror image sits mirrored across the body's x = 0 plane: R' = M R M, t' = M t.
+  if (p.placement) {
+    for (int i = 0; i < 3; ++i)
+      for (int j = 0; j < 3; ++j)
+        if ((i == 0) != (j == 0)) p.placement->rotation[i * 3 + j] = -p.placement->rotation[i * 3 + j];
+    p.placement->translation_mm.x = -p.placement->translation_mm.x;
+  }
   return p;
 }
 

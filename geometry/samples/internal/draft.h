@@ -40,7 +40,8 @@ std::pair<int, int> cut_dart(Piece& piece, int edge, double centre_mm, double wi
                              const std::string& dart_name);
 
 /// The mirror image (x -> -x) of a piece, outline kept counter-clockwise: edges reversed,
-/// notches and darts remapped, grain mirrored, `mirrored` set.
+/// notches and darts remapped, grain mirrored, `mirrored` set; a placement is mirrored across
+/// the body's x = 0 plane.
 Piece mirror_piece(const Piece& piece, const std::string& name);
 
 /// Placement rotating the piece by `theta_rad` about the vertical axis (piece +z faces the
