@@ -138,7 +138,13 @@ Result<std::unique_ptr<PieceRenderer>> make_piece_renderer(const Pattern& patter
       PieceData& pd = r->pieces_[static_cast<size_t>(p)];
       r->cut_[static_cast<size_t>(p)] = *cut;
       pd.cut_outline = *cut;
-      const auto band = triangulate_band(mesh_loop, *outer);
+      // Band triangles about as long as the seam segments they face.
+      double seg = 0;
+      for (size_t i = 0; i < mesh_loop.size(); ++i) seg += norm(mesh_loop[(i + 1) % mesh_loop.size()] - mesh_loop[i]);
+      const double spacing = std::clamp(seg / std::max<size_t>(1, mesh_loop.size()), 2.0, 20.0);
+      // Break lines long enough to cross the widest allowance along a sharp corner's mitre.
+      const double widest = *std::max_element(allowance->width_mm.begin(), allowance->width_mm.end());
+      const auto band = triangulate_band(mesh_loop, *outer, spacing, r->allowance_->source_breaks(p, 4 * widest + 5));
       build_piece_triangles(p, band, ctx, pd);
       if (finishing.marks == MarkMode::kPrinted) {
         pd.marks = printed_marks(pattern, p, *allowance, finishing);

@@ -13,6 +13,8 @@ namespace {
 constexpr double kMaxMitre = 4.0;
 // Slack on t and d when accepting a quad solution (numerical noise on shared mitre rays).
 constexpr double kParamSlack = 1e-9;
+// Boundary turns sharper than this are corners whose mitre the band triangles must respect.
+constexpr double kSharpTurn_rad = 0.35;
 
 Vec2 vertex_position(const GarmentSurface& s, int piece, int local) {
   return s.chart(piece).piece->mesh.vertices_mm[static_cast<size_t>(local)];
@@ -59,12 +61,14 @@ SeamCoordinates AllowanceSource::seam_coordinates(int piece, Vec2 x) const {
     if (len2 <= 0) continue;
     // Nearest point on the segment, for the fallback and to skip far segments cheaply.
     const double tn = std::clamp(dot(x - p0, e) / len2, 0.0, 1.0);
-    const double dist = norm(x - (p0 + e * tn));
-    if (dist < best_fallback) {
-      best_fallback = dist;
-      fallback = {static_cast<int>(k), tn, dist};
+    const Vec2 off = x - (p0 + e * tn);
+    const double dist2 = dot(off, off);
+    if (dist2 < best_fallback) {
+      best_fallback = dist2;
+      fallback = {static_cast<int>(k), tn, std::sqrt(dist2)};
     }
-    if (dist > best_d * kMaxMitre + 1e-9) continue;
+    const double reach = best_d * kMaxMitre + 1e-9;
+    if (dist2 > reach * reach) continue;
     // Solve x = p0 + t e + d (b + t c) for t, d: the quad between the mitre rays at both ends.
     const Vec2 q = x - p0, b = m[k], cc = m[(k + 1) % n] - m[k];
     const double qa = -cross(e, cc);
@@ -130,6 +134,27 @@ AllowanceSample AllowanceSource::source(int piece, const SeamCoordinates& sc) co
   out.position_mm = seam_point(src_piece, src);
   // A narrow partner may not be as deep as the allowance is wide: take its nearest point.
   out.location = surface_.chart(src_piece).locator.nearest(out.position_mm);
+  return out;
+}
+
+std::vector<std::array<Vec2, 2>> AllowanceSource::source_breaks(int piece, double length_mm) const {
+  std::vector<std::array<Vec2, 2>> out;
+  const PieceChart& c = surface_.chart(piece);
+  const auto& m = mitre_[static_cast<size_t>(piece)];
+  const size_t n = c.segments.size();
+  for (size_t k = 0; k < n; ++k) {
+    const BoundarySegment& prev = c.segments[(k + n - 1) % n];
+    const BoundarySegment& cur = c.segments[k];
+    const bool source_changes = prev.partner_piece != cur.partner_piece ||
+                                (cur.partner_piece >= 0 && prev.partner_segment + (prev.partner_reversed ? -1 : 1) != cur.partner_segment &&
+                                 prev.partner_segment != cur.partner_segment + (cur.partner_reversed ? 1 : -1));
+    const Vec2 v = vertex_position(surface_, piece, c.loop[k]);
+    const Vec2 d0 = normalized(v - vertex_position(surface_, piece, prev.a));
+    const Vec2 d1 = normalized(vertex_position(surface_, piece, cur.b) - v);
+    const bool sharp = dot(d0, d1) < std::cos(kSharpTurn_rad);
+    if (!source_changes && !sharp) continue;
+    out.push_back({v, v + normalized(m[k]) * length_mm});
+  }
   return out;
 }
 

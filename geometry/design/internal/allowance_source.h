@@ -3,6 +3,7 @@
 // (category 1), at a hem or open edge the mirror of the piece's own inner strip (category 2).
 #pragma once
 
+#include <array>
 #include <vector>
 
 #include "geometry/common/vec.h"
@@ -42,6 +43,11 @@ class AllowanceSource {
 
   /// Source for given seam coordinates (used by the continuity measurement).
   AllowanceSample source(int piece, const SeamCoordinates& c) const;
+
+  /// Lines from the boundary vertices where the print source changes (another partner, a seam
+  /// meeting an open edge) or the outline turns sharply, along their mitres, `length_mm` long:
+  /// the band triangulation must not cross them.
+  std::vector<std::array<Vec2, 2>> source_breaks(int piece, double length_mm) const;
 
  private:
   const GarmentSurface& surface_;

@@ -119,19 +119,20 @@ class Builder {
       const double dw = std::abs(m.f[l].w - 0.5 * (a.f[l].w + b.f[l].w));
       // Where the layer leaves all three points blank, its coordinates do not matter.
       if (a.f[l].w <= kWeightSnap && b.f[l].w <= kWeightSnap && m.f[l].w <= kWeightSnap) continue;
-      e = std::max({e, du / tf->tolerance_texels, dv / tf->tolerance_texels, dw / kWeightTolerance});
+      const double tol = tf->tolerance_texels * (band ? ctx_.band_tolerance_factor : 1.0);
+      e = std::max({e, du / tol, dv / tol, dw / kWeightTolerance});
     }
     if (band) {
       // Strokes and occlusion read the interpolated 3D point.
       const Vec3 d = m.sp.position_mm - (a.sp.position_mm + b.sp.position_mm) * 0.5;
-      e = std::max(e, norm(d) / (4 * ctx_.tolerance_mm));
+      e = std::max(e, norm(d) / (ctx_.band_tolerance_factor * ctx_.tolerance_mm));
     }
     return e;
   }
 
   void refine(const std::array<Vtx, 3>& v, bool band, int depth) {
     const double longest = std::max({norm(v[1].pos - v[0].pos), norm(v[2].pos - v[1].pos), norm(v[0].pos - v[2].pos)});
-    if (depth < ctx_.max_depth && longest > ctx_.min_edge_mm) {
+    if (depth < ctx_.max_depth && longest > (band ? ctx_.band_min_edge_mm : ctx_.min_edge_mm)) {
       const Vtx m01 = midpoint(v[0], v[1], band), m12 = midpoint(v[1], v[2], band), m20 = midpoint(v[2], v[0], band);
       const double e = std::max({error(v[0], v[1], m01, band), error(v[1], v[2], m12, band), error(v[2], v[0], m20, band)});
       if (e > 1) {

@@ -18,6 +18,11 @@ struct BuildContext {
   const std::vector<LayerRuntime>* layers = nullptr;
   double tolerance_mm = 0.01;   ///< interpolation error budget on the garment surface
   double min_edge_mm = 0.25;    ///< triangles are not split below this size
+  /// The allowance band (hidden in the sewn garment) copies its print with this many times the
+  /// tolerance and never splits below `band_min_edge_mm`: its mapping bends at mitred corners,
+  /// which would otherwise split the band into slivers for no visible gain.
+  double band_tolerance_factor = 5;
+  double band_min_edge_mm = 1.0;
   int max_depth = 7;            ///< nor more than this many times
   bool blank_band = false;      ///< the allowance band is left unprinted
 };

@@ -1,0 +1,71 @@
+// geometry/continuity/continuity.h: print continuity, measured: across every stitched seam and
+// between every seam allowance and the strip it copies, as CIEDE2000 differences of the rendered
+// contone raster (the same PieceRenderer the RIP uses, before screening).
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "geometry/allowance/finishing.h"
+#include "geometry/common/error.h"
+#include "geometry/design/piece_renderer.h"
+#include "geometry/garment/garment.h"
+#include "geometry/pattern/pattern.h"
+
+namespace tp::geometry {
+
+/// Summary of a set of colour differences.
+struct DeltaEStats {
+  std::size_t samples = 0;
+  double mean = 0;
+  double p95 = 0;
+  double max = 0;
+};
+
+/// One stitched seam: the two edges sewn together.
+struct SeamContinuity {
+  std::string piece_a, edge_a, piece_b, edge_b;
+  DeltaEStats de00;
+};
+
+/// One edge's allowance against the strip it copies.
+struct AllowanceContinuity {
+  std::string piece, edge;
+  std::string source_piece;  ///< partner (category 1) or the piece itself (category 2)
+  int category = 2;
+  DeltaEStats de00;
+};
+
+/// The job report's `seams` and `allowance` figures.
+struct ContinuityReport {
+  double dpi = 0;
+  DeltaEStats seams;       ///< over all seam samples
+  DeltaEStats allowance;   ///< over all allowance samples
+  std::vector<SeamContinuity> seam_list;
+  std::vector<AllowanceContinuity> allowance_list;
+};
+
+struct ContinuityOptions {
+  double spacing_mm = 0;   ///< between samples along a seam; 0: one pixel at the dpi, at least 0.2 mm
+  std::vector<double> depth_fractions{0.25, 0.5, 0.75};  ///< allowance sample depths, of its width
+};
+
+/// Samples every stitched seam at pairs of pixels centred on the same 3D point in both pieces,
+/// and every allowance at a few depths against the source pixel its print was copied from,
+/// rendering each at `dpi` through `renderer`, composited over white; CIEDE2000 per pair.
+/// Samples where the allowance is cut away (outside the cut outline, folded-over concave parts)
+/// or where the source point had to be clamped into a narrow partner are skipped.
+/// Fails when the garment does not match the pattern or dpi is not positive.
+[[nodiscard]] Result<ContinuityReport> measure_continuity(const Pattern& pattern, const Garment& garment,
+                                                         const Finishing& finishing, const PieceRenderer& renderer,
+                                                         double dpi, const ContinuityOptions& options = {});
+
+/// The report as JSON: {"dpi":..,"seams":{"samples","de00_mean","de00_p95","de00_max","list":[..]},
+/// "allowance":{...}}.
+std::string continuity_json(const ContinuityReport& report);
+
+/// Mean, 95th percentile (nearest rank) and maximum of `values` (reordered).
+DeltaEStats summarise(std::vector<double>& values);
+
+}  // namespace tp::geometry
