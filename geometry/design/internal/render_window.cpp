@@ -34,7 +34,7 @@ PixelLinear to_pixels(const Linear2& f, const Affine2& m) {
 }
 
 // A triangle edge in pixel space, endpoints ordered by y (then x) so both triangles sharing the
-// edge compute bit-identical crossings.
+// edge compute identical crossings.
 struct EdgePx {
   double x0, y0, y1, slope;  // x at y = x0 + (y - y0) * slope, for y in [y0, y1)
 };
@@ -115,20 +115,24 @@ void accumulate(float* acc, int width, const OutlineEdge& e, int row, int& touch
   }
 }
 
-// Pixel span [i0, i1) of a triangle on the row whose centre is yc; false when none.
+// Pixel span [i0, i1) of a triangle on the row whose centre is yc; false when none. Edges are
+// closed and grown by a hair, so a centre exactly on an edge shared with a neighbour, or on a
+// T-junction left by splitting one side only, always belongs to some triangle; the caller skips
+// pixels an earlier triangle already claimed.
 bool span(const TriSetup& t, double yc, int& i0, int& i1) {
-  double xs[3];
-  int n = 0;
+  constexpr double kEps = 1e-7;  // pixels
+  double xl = 1e300, xr = -1e300;
   for (int k = 0; k < t.n_edges; ++k) {
     const EdgePx& e = t.edges[k];
-    if (yc < e.y0 || yc >= e.y1) continue;
-    xs[n++] = e.x0 + (yc - e.y0) * e.slope;
+    if (yc < e.y0 - kEps || yc > e.y1 + kEps) continue;
+    const double x = e.x0 + (yc - e.y0) * e.slope;
+    xl = std::min(xl, x);
+    xr = std::max(xr, x);
   }
-  if (n < 2) return false;
-  const double xl = std::min(xs[0], xs[1]), xr = std::max(xs[0], xs[1]);
-  // Pixel i is inside when its centre i + 0.5 lies in [xl, xr).
-  i0 = static_cast<int>(std::ceil(xl - 0.5));
-  i1 = static_cast<int>(std::ceil(xr - 0.5));
+  if (xl > xr) return false;
+  // Pixel i is inside when its centre i + 0.5 lies in [xl, xr].
+  i0 = static_cast<int>(std::ceil(xl - 0.5 - kEps));
+  i1 = static_cast<int>(std::floor(xr - 0.5 + kEps)) + 1;
   return i1 > i0;
 }
 
@@ -257,7 +261,7 @@ void render_window(const PieceData& piece, const std::vector<LayerRuntime>& laye
     if (ymax < 0 || ymin > H || xmax < 0 || xmin > W) continue;
     TriSetup t;
     t.tri = id;
-    t.row0 = std::max(0, static_cast<int>(std::floor(ymin - 0.5)));
+    t.row0 = std::max(0, static_cast<int>(std::floor(ymin - 0.5)) - 1);
     t.row1 = std::min(H, static_cast<int>(std::ceil(ymax - 0.5)) + 1);
     for (int k = 0; k < 3; ++k)
       if (q[k].y != q[(k + 1) % 3].y) t.edges[t.n_edges++] = make_edge(q[k], q[(k + 1) % 3]);
@@ -363,6 +367,9 @@ void render_window(const PieceData& piece, const std::vector<LayerRuntime>& laye
       if (!span(t, yc, i0, i1)) continue;
       i0 = std::max(i0, x0);
       i1 = std::min(i1, x1);
+      // Neighbours share their boundary pixels: the first triangle keeps them.
+      while (i0 < i1 && s.written[static_cast<size_t>(i0)]) ++i0;
+      while (i1 > i0 && s.written[static_cast<size_t>(i1 - 1)]) --i1;
       if (i1 <= i0) continue;
       const int n = i1 - i0;
       std::uint32_t* dst = s.colour.data() + i0;
