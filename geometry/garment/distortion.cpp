@@ -24,23 +24,45 @@ std::pair<double, double> singular_values(const std::array<Vec2, 3>& p, const st
   return {std::sqrt(std::max(tr / 2 + disc, 0.0)), std::sqrt(std::max(tr / 2 - disc, 0.0))};
 }
 
-// Chart vertices of a span, in order from its start to its end.
+// Arc length along `pl` of the point of `pl` nearest to q.
+double arc_position(const std::vector<Vec2>& pl, Vec2 q) {
+  double best = 1e300, pos = 0, acc = 0;
+  for (size_t i = 1; i < pl.size(); ++i) {
+    Vec2 d = pl[i] - pl[i - 1];
+    double len = norm(d);
+    double t = len > 0 ? std::clamp(dot(q - pl[i - 1], d) / (len * len), 0.0, 1.0) : 0.0;
+    double dist = norm(pl[i - 1] + d * t - q);
+    if (dist < best) best = dist, pos = acc + t * len;
+    acc += len;
+  }
+  return pos;
+}
+
+// Chart vertices of a span, in order from its start to its end: the edge's mesh vertices whose
+// arc-length position on the pattern edge lies within [from, to].
 std::vector<int> span_vertices(const Pattern& pattern, const Garment& g, const EdgeSpan& sp) {
   const PieceMesh& m = g.pieces[sp.piece].mesh;
-  const auto& ev = m.edge_vertices[sp.edge];
-  double to = sp.to_mm < 0 ? edge_length_mm(pattern.pieces[sp.piece].edges[sp.edge]) : sp.to_mm;
+  const Edge& edge = pattern.pieces[sp.piece].edges[sp.edge];
+  double to = sp.to_mm < 0 ? edge_length_mm(edge) : sp.to_mm;
   std::vector<int> out;
-  double s = 0;
-  for (size_t k = 0; k < ev.size(); ++k) {
-    if (k > 0) s += norm(m.vertices_mm[ev[k]] - m.vertices_mm[ev[k - 1]]);
-    if (s >= sp.from_mm - kSpanTolMm && s <= to + kSpanTolMm) out.push_back(ev[k]);
+  for (int v : m.edge_vertices[sp.edge]) {
+    double s = arc_position(edge.points_mm, m.vertices_mm[v]);
+    if (s >= sp.from_mm - kSpanTolMm && s <= to + kSpanTolMm) out.push_back(v);
   }
   return out;
 }
 
-double span_length_2d(const Pattern& pattern, const EdgeSpan& sp) {
-  double l = edge_length_mm(pattern.pieces[sp.piece].edges[sp.edge]);
-  return (sp.to_mm < 0 ? l : std::min(sp.to_mm, l)) - sp.from_mm;
+// Length of the polyline through the chart vertices `vs`, in 2D (mesh) or 3D (garment).
+double chart_length(const GarmentPiece& gp, const std::vector<int>& vs) {
+  double l = 0;
+  for (size_t k = 1; k < vs.size(); ++k) l += norm(gp.mesh.vertices_mm[vs[k]] - gp.mesh.vertices_mm[vs[k - 1]]);
+  return l;
+}
+
+double sewn_length(const Garment& g, const GarmentPiece& gp, const std::vector<int>& vs) {
+  double l = 0;
+  for (size_t k = 1; k < vs.size(); ++k) l += norm(g.vertices_mm[gp.vertex_3d[vs[k]]] - g.vertices_mm[gp.vertex_3d[vs[k - 1]]]);
+  return l;
 }
 
 }  // namespace
@@ -83,12 +105,12 @@ DistortionReport measure_distortion(const Pattern& pattern, const Garment& g, co
     const Stitch& st = pattern.stitches[s];
     SeamLength sl;
     sl.stitch = static_cast<int>(s);
-    sl.a_mm = span_length_2d(pattern, st.a);
-    sl.b_mm = span_length_2d(pattern, st.b);
-    std::vector<int> va = span_vertices(pattern, g, st.a);
-    const GarmentPiece& gp = g.pieces[st.a.piece];
-    for (size_t k = 1; k < va.size(); ++k)
-      sl.sewn_mm += norm(g.vertices_mm[gp.vertex_3d[va[k]]] - g.vertices_mm[gp.vertex_3d[va[k - 1]]]);
+    // Lengths along the meshed seam (chords between its vertices) in 2D on both pieces and in
+    // 3D, so curved seams are compared like with like.
+    std::vector<int> va = span_vertices(pattern, g, st.a), vb = span_vertices(pattern, g, st.b);
+    sl.a_mm = chart_length(g.pieces[st.a.piece], va);
+    sl.b_mm = chart_length(g.pieces[st.b.piece], vb);
+    sl.sewn_mm = sewn_length(g, g.pieces[st.a.piece], va);
     double ref = std::max(sl.a_mm, sl.b_mm);
     sl.diff = ref > 0 ? std::max({std::abs(sl.sewn_mm - sl.a_mm), std::abs(sl.sewn_mm - sl.b_mm), std::abs(sl.a_mm - sl.b_mm)}) / ref : 0;
     r.seam_len_diff_max = std::max(r.seam_len_diff_max, sl.diff);

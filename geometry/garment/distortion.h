@@ -12,8 +12,8 @@ namespace tp::geometry {
 /// One stitch: its two spans' lengths on the pattern and the sewn seam's length in 3D.
 struct SeamLength {
   int stitch = 0;
-  double a_mm = 0, b_mm = 0;  ///< 2D span lengths (pattern edges)
-  double sewn_mm = 0;         ///< 3D length of the seam through the garment's vertices
+  double a_mm = 0, b_mm = 0;  ///< 2D span lengths along the meshed seam (chords between seam vertices)
+  double sewn_mm = 0;         ///< 3D length of the same seam vertices in the garment
   double diff = 0;            ///< max(|sewn - a|, |sewn - b|, |a - b|) / max(a, b)
 };
 

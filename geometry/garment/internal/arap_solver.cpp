@@ -2,11 +2,13 @@
 #include "geometry/garment/internal/arap_solver.h"
 
 #include <Eigen/Sparse>
+#include <Eigen/Dense>
 #include <Eigen/SparseCholesky>
 
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <limits>
 #include <thread>
 
 namespace tp::geometry::internal {
@@ -141,25 +143,29 @@ Result<ClothStats> relax_cloth(ClothMesh& cloth, const BodySdf& body, const Clot
 
   const int threads = std::clamp(p.threads, 1, 8);
   std::vector<Eigen::MatrixXd> rhs_part(threads, Eigen::MatrixXd::Zero(n, 3));
+  std::vector<double> energy_part(threads, 0.0);
   Eigen::MatrixXd rhs(n, 3), sol(n, 3);
-  std::vector<Vec3> prev;
-  for (int it = 0; it < p.iterations; ++it) {
-    if (cancel && cancel->cancelled()) return fail(ErrorCode::kCancelled, "sewing cancelled");
-    // Local step: best rotation per triangle, accumulated into per-thread right-hand sides.
+  std::vector<Vec3>& x = cloth.x_mm;
+
+  // Local step at x: best rotation per triangle into per-thread right-hand sides; returns the
+  // membrane energy sum_t A_t |F_t - R_t|^2.
+  const auto local_step = [&]() {
     parallel_for(nf, threads, [&](int b, int e, int slot) {
       Eigen::MatrixXd& r = rhs_part[slot];
       r.setZero();
+      double energy = 0;
       for (int f = b; f < e; ++f) {
         const auto& t = cloth.triangles[f];
         const TriConst& c = tc[f];
         if (c.area == 0) continue;
         Vec3 f0{}, f1{};
         for (int k = 0; k < 3; ++k) {
-          f0 += cloth.x_mm[t[k]] * c.g[k][0];
-          f1 += cloth.x_mm[t[k]] * c.g[k][1];
+          f0 += x[t[k]] * c.g[k][0];
+          f1 += x[t[k]] * c.g[k][1];
         }
         Vec3 r0, r1;
         closest_rotation(f0, f1, r0, r1);
+        energy += c.area * (dot(f0 - r0, f0 - r0) + dot(f1 - r1, f1 - r1));
         for (int k = 0; k < 3; ++k) {
           Vec3 v = (r0 * c.g[k][0] + r1 * c.g[k][1]) * c.area;
           r(t[k], 0) += v.x;
@@ -167,13 +173,37 @@ Result<ClothStats> relax_cloth(ClothMesh& cloth, const BodySdf& body, const Clot
           r(t[k], 2) += v.z;
         }
       }
+      energy_part[slot] = energy;
     });
+    double e = 0;
+    for (int t = 0; t < threads; ++t) e += energy_part[t];
+    return e;
+  };
+
+  // Anderson acceleration of the fixed-point map x -> G(x) (local, global, contact), with
+  // an energy safeguard: an extrapolated iterate that raises the energy is replaced by the
+  // plain one (Peng et al. 2018, "Anderson acceleration for geometry optimization").
+  const int window = p.anderson_window;
+  std::vector<Eigen::VectorXd> d_g, d_f;  // history of differences of G(x) and of G(x) - x
+  Eigen::VectorXd g_prev, f_prev, g_vec(3 * n), f_vec(3 * n);
+  std::vector<Vec3> plain;  // last plain iterate G(x), always pushed out of the body
+  double accepted_energy = std::numeric_limits<double>::infinity();
+
+  for (int it = 0; it < p.iterations; ++it) {
+    if (cancel && cancel->cancelled()) return fail(ErrorCode::kCancelled, "sewing cancelled");
+    double energy = local_step();
+    if (window > 0 && !plain.empty() && energy > accepted_energy) {
+      x = plain;
+      d_g.clear(), d_f.clear();
+      energy = local_step();
+    }
+    accepted_energy = energy;
     rhs.setZero();
     for (const auto& r : rhs_part) rhs += r;
     for (int i = 0; i < n; ++i) {
-      rhs(i, 0) += w[i] * cloth.x_mm[i].x;
-      rhs(i, 1) += w[i] * cloth.x_mm[i].y - mass[i] * p.gravity_per_mm;
-      rhs(i, 2) += w[i] * cloth.x_mm[i].z;
+      rhs(i, 0) += w[i] * x[i].x;
+      rhs(i, 1) += w[i] * x[i].y - mass[i] * p.gravity_per_mm;
+      rhs(i, 2) += w[i] * x[i].z;
     }
     // Global step: the three coordinates are independent solves with one factorisation.
     std::thread zsolve([&] { sol.col(2) = solver.solve(rhs.col(2)); });
@@ -181,18 +211,47 @@ Result<ClothStats> relax_cloth(ClothMesh& cloth, const BodySdf& body, const Clot
     sol.col(1) = solver.solve(rhs.col(1));
     zsolve.join();
 
-    std::vector<Vec3>& x = cloth.x_mm;
-    prev.assign(x.begin(), x.end());
-    for (int i = 0; i < n; ++i) x[i] = Vec3{sol(i, 0), sol(i, 1), sol(i, 2)};
+    plain.resize(n);
+    for (int i = 0; i < n; ++i) plain[i] = Vec3{sol(i, 0), sol(i, 1), sol(i, 2)};
     // Contact: nothing stays inside the body or closer than the clearance.
-    stats.contacts = push_out_of_body(x, body, p.clearance_mm, threads);
+    stats.contacts = push_out_of_body(plain, body, p.clearance_mm, threads);
     double move = 0;
-    for (int i = 0; i < n; ++i) move = std::max(move, norm(x[i] - prev[i]));
+    for (int i = 0; i < n; ++i) {
+      move = std::max(move, norm(plain[i] - x[i]));
+      g_vec.segment<3>(3 * i) << plain[i].x, plain[i].y, plain[i].z;
+      f_vec.segment<3>(3 * i) << plain[i].x - x[i].x, plain[i].y - x[i].y, plain[i].z - x[i].z;
+    }
     stats.iterations = it + 1;
     stats.last_move_mm = move;
     if (!std::isfinite(move)) return fail(ErrorCode::kSewing, "cloth relaxation diverged");
-    if (move < p.tolerance_mm) break;
+    if (move < p.tolerance_mm || window <= 0) {
+      x = plain;
+      if (move < p.tolerance_mm) break;
+      continue;
+    }
+    if (g_prev.size() == g_vec.size()) {
+      d_g.push_back(g_vec - g_prev);
+      d_f.push_back(f_vec - f_prev);
+      if (static_cast<int>(d_g.size()) > window) d_g.erase(d_g.begin()), d_f.erase(d_f.begin());
+    }
+    g_prev = g_vec, f_prev = f_vec;
+    Eigen::VectorXd next = g_vec;
+    if (!d_f.empty()) {
+      const int m = static_cast<int>(d_f.size());
+      Eigen::MatrixXd a(m, m);
+      Eigen::VectorXd rhs_aa(m);
+      for (int i = 0; i < m; ++i) {
+        rhs_aa(i) = d_f[i].dot(f_vec);
+        for (int j = 0; j < m; ++j) a(i, j) = d_f[i].dot(d_f[j]);
+      }
+      a.diagonal().array() += 1e-10 * (a.trace() + 1e-30);
+      Eigen::VectorXd theta = a.ldlt().solve(rhs_aa);
+      for (int i = 0; i < m; ++i) next -= theta(i) * d_g[i];
+    }
+    for (int i = 0; i < n; ++i) x[i] = Vec3{next(3 * i), next(3 * i + 1), next(3 * i + 2)};
   }
+  // End on a plain, pushed-out iterate.
+  if (!plain.empty()) x = plain;
   return stats;
 }
 

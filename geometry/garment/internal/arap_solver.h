@@ -29,6 +29,7 @@ struct ClothParams {
   int iterations = 100;
   double tolerance_mm = 0.005;     ///< stop when no vertex moves further in one iteration
   int threads = 2;
+  int anderson_window = 5;         ///< Anderson acceleration history (0: plain local-global)
 };
 
 /// Outcome of a run.
