@@ -72,6 +72,11 @@ void FirmwareTransport::set_connected(bool connected) {
   connected_ = connected;
 }
 
+void FirmwareTransport::with_controller(const std::function<void(PrinterController&)>& fn) {
+  std::lock_guard lock(mutex_);
+  fn(controller_);
+}
+
 std::string FirmwareTransport::describe() const { return "in-process printer '" + controller_.model().name + "'"; }
 
 }  // namespace tp::device

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <chrono>
+#include <functional>
 #include <mutex>
 
 #include "device/firmware/controller.h"
@@ -25,13 +26,17 @@ class FirmwareTransport final : public Transport {
   /// Plays an unplugged (false) or replugged (true) cable: while unplugged every call fails
   /// with kDisconnected; replugging resets the printer's link as a new USB connection would.
   void set_connected(bool connected);
+  /// Runs `fn` on the controller under the transport's lock (from another thread, e.g. a test
+  /// clearing a pause while the host streams).
+  void with_controller(const std::function<void(PrinterController&)>& fn);
   /// Microseconds since the transport was made: the controller's clock.
   [[nodiscard]] std::int64_t now_us() const;
 
  private:
   PrinterController& controller_;
   std::chrono::steady_clock::time_point start_;
-  mutable std::mutex mutex_;
+  // Recursive: a controller observer may unplug the cable from inside write().
+  mutable std::recursive_mutex mutex_;
   bool connected_ = true;
   bool needs_reconnect_ = false;
 };
