@@ -1,0 +1,110 @@
+// tests/geometry/pattern/suggest_stitches_test.cpp: stitch suggestions on FreeSewing and DXF patterns without stitches.
+#include "geometry/pattern/suggest_stitches.h"
+
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "geometry/pattern/dxf_aama.h"
+#include "geometry/pattern/freesewing_svg.h"
+#include "geometry/pattern/validate.h"
+#include "tests/support/paths.h"
+
+namespace tp::geometry {
+namespace {
+
+std::string side(const Pattern& p, const EdgeSpan& s) {
+  return p.pieces[s.piece].name + "." + p.pieces[s.piece].edges[s.edge].name;
+}
+
+/// "a <-> b" for every suggested stitch (spans not shown), for set comparison.
+std::set<std::string> seams(const Pattern& p, const std::vector<StitchSuggestion>& sug) {
+  std::set<std::string> out;
+  for (const auto& s : sug)
+    for (const Stitch& st : s.stitches) out.insert(side(p, st.a) + " <-> " + side(p, st.b));
+  return out;
+}
+
+TEST(SuggestStitches, TeaganTshirtIsSewnTheWayItIsMeant) {
+  auto r = load_freesewing_svg(tp::test::shared_data_dir() / "freesewing/teagan-cisFemaleAdult34.svg");
+  ASSERT_TRUE(r.has_value()) << r.error().what();
+  auto sug = suggest_stitches(*r);
+  // front/back: e1 side seam, e2 armhole, e3 shoulder, e4 neck (free), e0 hem (free); the
+  // front's +x side is the wearer's left, the back's +x side the wearer's right, so sides cross.
+  // The sleeve as drafted (front notch at +x) is a right sleeve: its cap takes the front's -x
+  // armhole and the back's +x armhole.
+  std::set<std::string> expected = {
+      "sleeve_l.e1 <-> sleeve_l.e3",       "sleeve_r.e3 <-> sleeve_r.e1",
+      "sleeve_l.e2 <-> front.e2_mirror",   "sleeve_l.e2 <-> back.e2",
+      "sleeve_r.e2 <-> back.e2_mirror",    "sleeve_r.e2 <-> front.e2",
+      "front.e1 <-> back.e1_mirror",       "front.e1_mirror <-> back.e1",
+      "front.e3 <-> back.e3_mirror",       "front.e3_mirror <-> back.e3"};
+  EXPECT_EQ(seams(*r, sug), expected);
+  for (size_t i = 1; i < sug.size(); ++i) EXPECT_GE(sug[i - 1].score, sug[i].score);
+  // Accepted, they validate (the cap's ease is within the default tolerance).
+  Pattern sewn = *r;
+  EXPECT_EQ(accept_suggestions(sewn, sug), 10);
+  Status s = validate_pattern(sewn);
+  EXPECT_TRUE(s.has_value()) << s.error().what();
+  // The cap is split where the front armhole's share of its length ends.
+  for (const auto& x : sug)
+    if (x.stitches.size() == 2) {
+      EXPECT_NEAR(x.stitches[0].a.to_mm, x.stitches[1].a.from_mm, 1e-9);
+      EXPECT_NE(x.reason.find("notch groups 4 of 4"), std::string::npos) << x.reason;
+    }
+}
+
+TEST(SuggestStitches, PenelopeSkirtDartsSidesAndCentreBack) {
+  auto r = load_freesewing_svg(tp::test::shared_data_dir() / "freesewing/penelope-cisFemaleAdult34.svg");
+  ASSERT_TRUE(r.has_value()) << r.error().what();
+  auto sug = suggest_stitches(*r);
+  int darts = 0;
+  for (const auto& s : sug) darts += s.reason.rfind("dart", 0) == 0;
+  EXPECT_EQ(darts, 8);  // two per back, four on the front
+  auto got = seams(*r, sug);
+  // back_l as drafted (centre back at x = 0) is the wearer's right back.
+  EXPECT_TRUE(got.count("back_r.e4 <-> front.e2")) << "left side seam";
+  EXPECT_TRUE(got.count("back_l.e4 <-> front.e2_mirror")) << "right side seam";
+  EXPECT_TRUE(got.count("back_l.e0 <-> back_r.e0")) << "centre back";
+  // Waist segments between darts are level edges with nothing but their length in common.
+  for (const std::string& s : got) EXPECT_EQ(s.find("waistband"), std::string::npos) << s;
+}
+
+TEST(SuggestStitches, DxfSkirtSideSeamsAcrossATurnPoint) {
+  auto r = load_dxf_aama(tp::test::source_dir() / "examples/patterns/skirt_aama.dxf");
+  ASSERT_TRUE(r.has_value()) << r.error().what();
+  auto sug = suggest_stitches(*r);
+  ASSERT_FALSE(sug.empty());
+  EXPECT_EQ(sug[0].score, 1.0);  // the back darts come first
+  auto got = seams(*r, sug);
+  // The front's smooth side seam meets the back's two edges either side of its hip turn point,
+  // the hip notches in line.
+  EXPECT_TRUE(got.count("FRONT.e1 <-> BACK_r.e1"));
+  EXPECT_TRUE(got.count("FRONT.e1 <-> BACK_r.e2"));
+  EXPECT_TRUE(got.count("FRONT.e1_mirror <-> BACK_l.e1"));
+  EXPECT_TRUE(got.count("BACK_l.e7 <-> BACK_r.e7"));
+  Pattern sewn = *r;
+  accept_suggestions(sewn, sug);
+  Status s = validate_pattern(sewn);
+  EXPECT_TRUE(s.has_value()) << s.error().what();
+}
+
+TEST(SuggestStitches, ExistingStitchesAndThresholdsAreRespected) {
+  auto r = load_freesewing_svg(tp::test::shared_data_dir() / "freesewing/teagan-cisFemaleAdult34.svg");
+  ASSERT_TRUE(r.has_value());
+  Pattern p = *r;
+  // Sew the sides by hand; the suggestions leave them alone.
+  int front = find_piece(p, "front"), back = find_piece(p, "back");
+  p.stitches.push_back(Stitch{EdgeSpan{front, find_edge(p.pieces[front], "e1"), 0, -1},
+                              EdgeSpan{back, find_edge(p.pieces[back], "e1_mirror"), 0, -1}, false});
+  auto sug = suggest_stitches(p);
+  for (const std::string& s : seams(p, sug)) EXPECT_EQ(s.find("front.e1 "), std::string::npos) << s;
+  SuggestOptions strict;
+  strict.min_score = 0.99;
+  for (const auto& x : suggest_stitches(p, strict)) ADD_FAILURE() << x.score << " " << x.reason;
+  Pattern q = *r;
+  EXPECT_EQ(accept_suggestions(q, suggest_stitches(*r), 0.89), 6);  // underarms (2) and caps (4) only
+}
+
+}  // namespace
+}  // namespace tp::geometry
