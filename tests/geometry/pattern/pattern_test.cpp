@@ -30,5 +30,27 @@ TEST(Pattern, FindsPiecesAndEdgesByName) {
   EXPECT_DOUBLE_EQ(edge_length_mm(pat.pieces[0].edges[1]), 100.0);
 }
 
+TEST(Pattern, PointsAndTangentsAlongAnEdge) {
+  Edge e{"l", EdgeCurve::kPolyline, {}, {{0, 0}, {10, 0}, {10, 0}, {10, 20}}};
+  EXPECT_EQ(point_along_edge(e, -5), (Vec2{0, 0}));
+  EXPECT_EQ(point_along_edge(e, 5), (Vec2{5, 0}));
+  EXPECT_EQ(point_along_edge(e, 20), (Vec2{10, 10}));
+  EXPECT_EQ(point_along_edge(e, 99), (Vec2{10, 20}));
+  // The zero-length segment at the corner is skipped.
+  EXPECT_EQ(tangent_along_edge(e, 5), (Vec2{1, 0}));
+  EXPECT_EQ(tangent_along_edge(e, 15), (Vec2{0, 1}));
+}
+
+TEST(Pattern, SpansResolveTheirEnd) {
+  Pattern pat;
+  pat.pieces.push_back(square_piece());
+  EXPECT_EQ(span_range_mm(pat, EdgeSpan{0, 1, 10, -1}), (std::array<double, 2>{10, 100}));
+  EXPECT_DOUBLE_EQ(span_length_mm(pat, EdgeSpan{0, 1, 10, 40}), 30.0);
+  EXPECT_DOUBLE_EQ(span_length_mm(pat, EdgeSpan{3, 1, 0, -1}), 0.0);
+  EXPECT_EQ(describe_edge(pat, 0, 2), "piece 'square' edge 'top' (2)");
+  EXPECT_EQ(describe_edge(pat, 0, 7), "piece 'square' edge #7");
+  EXPECT_EQ(describe_edge(pat, 4, 0), "piece #4");
+}
+
 }  // namespace
 }  // namespace tp::geometry
