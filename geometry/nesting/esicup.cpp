@@ -145,6 +145,8 @@ Result<StripProblem> parse_esicup(std::string_view json_text, std::string_view s
     j = json::parse(json_text.begin(), json_text.end());
   } catch (const json::parse_error& e) {
     return fail(ErrorCode::kParse, std::string(source) + ": not valid JSON (byte " + std::to_string(e.byte) + ")");
+  } catch (const json::exception&) {
+    return fail(ErrorCode::kParse, std::string(source) + ": not valid JSON (a number out of range)");
   }
   auto p = reader.problem(j);
   if (p && p->name.empty()) p->name = std::filesystem::path(source).stem().string();

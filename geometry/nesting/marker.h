@@ -29,6 +29,7 @@ struct Marker {
   double length_mm = 0;       ///< used roll length
   std::vector<PiecePlacement> placements;
   double utilisation = 0;     ///< piece area / (width * length), 0..1
+  double roll_start_mm = 0;   ///< where the marker starts on the roll (markers follow each other)
 };
 
 }  // namespace tp::geometry

@@ -38,6 +38,7 @@ std::shared_ptr<spdlog::logger> logger() {
 }
 
 std::string item_name(const StripItem& item, size_t index) {
+  if (!item.name.empty()) return item.name;
   return "item " + std::to_string(index) + " (id " + std::to_string(item.id) + ")";
 }
 
@@ -209,7 +210,8 @@ Result<StripSolution> nest_strip(const StripProblem& problem, const StripOptions
               &work, work, &cancel};
     if (b2.start < clock::now()) b2.start = clock::now();
     compress(layout, sep, cfg, b2, rng, hook);
-    logger()->debug("nest '{}': {} separator iterations, {} evaluations", problem.name, work, sep.evaluations());
+    sol.evaluations = static_cast<std::uint64_t>(sep.evaluations());
+    logger()->debug("nest '{}': {} separator iterations, {} evaluations", problem.name, work, sol.evaluations);
   }
 
   for (int k = 0; k < layout.size(); ++k)

@@ -26,6 +26,7 @@ struct StripPose {
 /// An item type to nest, `demand` copies of it.
 struct StripItem {
   int id = 0;                    ///< caller's id, copied to StripPlacement::item_id
+  std::string name;              ///< for messages; "item <index> (id <id>)" when empty
   Polygon shape;                 ///< simple polygon in the item's own frame (any orientation)
   int demand = 1;                ///< copies to place
   /// Allowed discrete poses. With `free_rotation`, only their mirror flags count (any angle).
@@ -82,6 +83,7 @@ struct StripSolution {
   double density = 0;         ///< placed item area / (width * length), 0..1
   double seconds = 0;         ///< wall-clock time spent
   std::uint64_t iterations = 0;  ///< separator iterations run
+  std::uint64_t evaluations = 0; ///< candidate placements evaluated by the search
   double constructive_length = 0;  ///< length after the constructive placement
 };
 

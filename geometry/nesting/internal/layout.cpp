@@ -17,6 +17,8 @@ constexpr double kProxyEpsilonDiameterRatio = 0.01;
 constexpr double kContainerLossFloor = 1e-4;
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
+// Largest poles of each shape compared before the exact boundary test.
+constexpr size_t kQuickPoles = 4;
 
 Box2 shifted(const Box2& b, Vec2 t) { return {b.min + t, b.max + t}; }
 
@@ -30,6 +32,7 @@ void make_placed(const OrientedShape& o, const ItemShape& s, const Pose& pose, V
   for (size_t i = 0; i < o.pts.size(); ++i) out.pts[i] = o.pts[i] + t;
   out.poles.resize(o.poles.size());
   for (size_t i = 0; i < o.poles.size(); ++i) out.poles[i] = {o.poles[i].c + t, o.poles[i].r};
+  out.pole_soa.assign(out.poles);
   out.box = shifted(o.box, t);
   out.hull_area = s.hull_area;
   out.diameter = s.diameter;
@@ -65,8 +68,8 @@ double Layout::container_loss(const Box2& box, double hull_area) const {
   const Box2 c{{ctx_->x_lo, ctx_->y_lo}, {x_hi_, ctx_->y_hi}};
   if (box_within(box, c)) return 0;
   const double area = box.width() * box.height();
-  const double ix = std::fmin(box.max.x, c.max.x) - std::fmax(box.min.x, c.min.x);
-  const double iy = std::fmin(box.max.y, c.max.y) - std::fmax(box.min.y, c.min.y);
+  const double ix = lo(box.max.x, c.max.x) - hi(box.min.x, c.min.x);
+  const double iy = lo(box.max.y, c.max.y) - hi(box.min.y, c.min.y);
   double outside;
   if (ix > 0 && iy > 0) {
     outside = area - ix * iy + kContainerLossFloor * area;
@@ -82,11 +85,29 @@ double Layout::pair_loss(const Vec2* pts, int n, const Box2& box, Vec2 inner, co
                          Vec2 pole_shift, double hull_a, double diam_a, const Placed& other,
                          QueryScratch& s) const {
   if (!boxes_touch(box, other.box)) return 0;
-  const PolyRef a{pts, n, box, inner};
-  const PolyRef b{other.pts.data(), static_cast<int>(other.pts.size()), other.box, other.poles[0].c};
-  if (!polygons_collide(a, b, s.edges_a, s.edges_b)) return 0;
-  const double eps = kProxyEpsilonDiameterRatio * std::fmax(diam_a, other.diameter);
-  const double proxy = overlap_proxy(other.poles, poles, pole_shift, eps) + eps * eps;
+  // Overlapping poles prove a collision at once (most rejected samples overlap deeply); only
+  // otherwise are the boundaries compared.
+  bool hit = false;
+  const size_t na = poles.size() < kQuickPoles ? poles.size() : kQuickPoles;
+  const size_t nb = other.poles.size() < kQuickPoles ? other.poles.size() : kQuickPoles;
+  for (size_t i = 0; i < na && !hit; ++i) {
+    const Vec2 c = poles[i].c + pole_shift;
+    for (size_t j = 0; j < nb; ++j) {
+      const Vec2 d = c - other.poles[j].c;
+      const double r = poles[i].r + other.poles[j].r;
+      if (d.x * d.x + d.y * d.y < r * r) {
+        hit = true;
+        break;
+      }
+    }
+  }
+  if (!hit) {
+    const PolyRef a{pts, n, box, inner};
+    const PolyRef b{other.pts.data(), static_cast<int>(other.pts.size()), other.box, other.poles[0].c};
+    if (!polygons_collide(a, b, s.edges_a, s.edges_b)) return 0;
+  }
+  const double eps = kProxyEpsilonDiameterRatio * hi(diam_a, other.diameter);
+  const double proxy = overlap_proxy(other.pole_soa, poles, pole_shift, eps) + eps * eps;
   return std::sqrt(proxy) * std::sqrt(std::sqrt(hull_a) * std::sqrt(other.hull_area));
 }
 
@@ -201,6 +222,7 @@ void Layout::resize(double new_x_hi, double split_x, QueryScratch& scratch) {
     p.t += shift;
     for (Vec2& v : p.pts) v += shift;
     for (Circle& c : p.poles) c.c += shift;
+    p.pole_soa.assign(p.poles);
     p.box = shifted(p.box, shift);
     p.original_max_x += delta;
     p.original_min_x += delta;

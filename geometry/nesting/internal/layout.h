@@ -7,6 +7,7 @@
 
 #include "geometry/common/vec.h"
 #include "geometry/nesting/internal/item_shape.h"
+#include "geometry/nesting/internal/overlap.h"
 
 namespace tp::geometry::nesting {
 
@@ -30,6 +31,7 @@ struct Placed {
   Vec2 t;
   std::vector<Vec2> pts;
   std::vector<Circle> poles;
+  PoleSoA pole_soa;            ///< the same poles, for the overlap proxy
   Box2 box;
   double hull_area = 0;
   double diameter = 0;

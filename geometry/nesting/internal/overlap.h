@@ -9,6 +9,17 @@
 
 namespace tp::geometry::nesting {
 
+/// Smaller / larger of two numbers (std::fmin/fmax handle NaNs through a library call, which
+/// costs a fifth of the search time here).
+[[nodiscard]] inline double lo(double a, double b) { return b < a ? b : a; }
+[[nodiscard]] inline double hi(double a, double b) { return a < b ? b : a; }
+
+/// Poles as float arrays padded to a multiple of 4 (far away, radius 0), for the SIMD proxy.
+struct PoleSoA {
+  std::vector<float> x, y, r;
+  void assign(const std::vector<Circle>& poles);
+};
+
 /// True when boxes a and b share at least one point.
 [[nodiscard]] inline bool boxes_touch(const Box2& a, const Box2& b) {
   return a.min.x <= b.max.x && b.min.x <= a.max.x && a.min.y <= b.max.y && b.min.y <= a.max.y;
@@ -33,10 +44,10 @@ struct PolyRef {
 /// collision outlines legal). `ea` and `eb` are scratch buffers.
 [[nodiscard]] bool polygons_collide(const PolyRef& a, const PolyRef& b, std::vector<int>& ea, std::vector<int>& eb);
 
-/// Overlap proxy between two sets of poles (the second shifted by `shift_b`): the sum over pole
+/// Overlap proxy between two sets of poles (those of `b` shifted by `shift_b`): the sum over pole
 /// pairs of their penetration depth times the smaller radius, with a smooth positive tail of
-/// width `eps` for pairs that do not penetrate. Units mm².
-[[nodiscard]] double overlap_proxy(const std::vector<Circle>& a, const std::vector<Circle>& b, Vec2 shift_b,
-                                   double eps);
+/// width `eps` for pairs that do not penetrate. Units mm². Single precision: it ranks
+/// placements, it does not decide collisions.
+[[nodiscard]] double overlap_proxy(const PoleSoA& a, const std::vector<Circle>& b, Vec2 shift_b, double eps);
 
 }  // namespace tp::geometry::nesting

@@ -86,12 +86,13 @@ class OutwardSimplifier {
         if (alive_[i] && cand_[i].kind != Candidate::kNone &&
             (best == v_.size() || cand_[i].cost < cand_[best].cost))
           best = i;
-      if (best == v_.size() || spent + cand_[best].cost > budget) break;
+      const double cost = best == v_.size() ? 0.0 : cand_[best].cost;
+      if (best == v_.size() || spent + cost > budget) break;
       if (!apply(best)) {
         cand_[best] = {};  // blocked: it would make the outline cross itself
         continue;
       }
-      spent += cand_[best].cost;
+      spent += cost;
     }
     Polygon out;
     size_t start = 0;

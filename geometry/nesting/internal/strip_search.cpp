@@ -22,10 +22,11 @@ void fit_strip(Layout& layout, QueryScratch& scratch) {
 
 void disrupt(Layout& layout, double large_item_share, Rng& rng, QueryScratch& scratch) {
   const int n = layout.size();
-  if (n < 2) return;
   // The "large" copies: the biggest that together hold `large_item_share` of the hull area.
-  std::vector<int> order(n);
-  std::iota(order.begin(), order.end(), 0);
+  std::vector<int> order;
+  for (int k = 0; k < n; ++k)
+    if (layout.item(k).present) order.push_back(k);
+  if (order.size() < 2) return;
   std::stable_sort(order.begin(), order.end(),
                    [&](int a, int b) { return layout.item(a).hull_area > layout.item(b).hull_area; });
   double total = 0;
@@ -37,7 +38,7 @@ void disrupt(Layout& layout, double large_item_share, Rng& rng, QueryScratch& sc
     if (cum > large_item_share * total) break;
   }
   std::vector<int> large;
-  for (int k = 0; k < n; ++k)
+  for (int k : order)
     if (layout.item(k).hull_area >= cutoff) large.push_back(k);
   const int a = large[rng.below(large.size())];
   const Placed& pa = layout.item(a);
@@ -50,7 +51,7 @@ void disrupt(Layout& layout, double large_item_share, Rng& rng, QueryScratch& sc
       partners.push_back(k);
   }
   if (partners.empty())
-    for (int k = 0; k < n; ++k)
+    for (int k : order)
       if (k != a) partners.push_back(k);
   const int b = partners[rng.below(partners.size())];
 
