@@ -81,7 +81,8 @@ void closest_rotation(Vec3 f0, Vec3 f1, Vec3& r0, Vec3& r1) {
 
 }  // namespace
 
-int push_out_of_body(std::vector<Vec3>& x, const BodySdf& body, double clearance_mm, int threads) {
+int push_out_of_body(std::vector<Vec3>& x, const BodySdf& body, double clearance_mm, int threads,
+                      const std::vector<Vec3>* fallback) {
   std::atomic<int> moved{0};
   parallel_for(static_cast<int>(x.size()), threads, [&](int b, int e, int) {
     int count = 0;
@@ -89,6 +90,12 @@ int push_out_of_body(std::vector<Vec3>& x, const BodySdf& body, double clearance
       // The interpolated grid is within a cell of the truth: skip clearly free vertices.
       if (body.approx_distance_mm(x[i]) > clearance_mm + kCullCells * body.spacing_mm()) continue;
       BodySdf::Hit h = body.query(x[i]);
+      if (!h.near && h.distance_mm < 0 && fallback) {
+        // Deeper than the band: no surface to push to, so the vertex keeps its last position.
+        x[i] = (*fallback)[i];
+        ++count;
+        continue;
+      }
       if (h.distance_mm >= clearance_mm || !h.near) continue;
       x[i] = h.closest_mm + h.normal * clearance_mm;
       ++count;
@@ -187,6 +194,7 @@ Result<ClothStats> relax_cloth(ClothMesh& cloth, const BodySdf& body, const Clot
   std::vector<Eigen::VectorXd> d_g, d_f;  // history of differences of G(x) and of G(x) - x
   Eigen::VectorXd g_prev, f_prev, g_vec(3 * n), f_vec(3 * n);
   std::vector<Vec3> plain;  // last plain iterate G(x), always pushed out of the body
+  std::vector<Vec3> last_plain;
   double accepted_energy = std::numeric_limits<double>::infinity();
 
   for (int it = 0; it < p.iterations; ++it) {
@@ -211,10 +219,11 @@ Result<ClothStats> relax_cloth(ClothMesh& cloth, const BodySdf& body, const Clot
     sol.col(1) = solver.solve(rhs.col(1));
     zsolve.join();
 
+    last_plain = plain.empty() ? x : plain;
     plain.resize(n);
     for (int i = 0; i < n; ++i) plain[i] = Vec3{sol(i, 0), sol(i, 1), sol(i, 2)};
     // Contact: nothing stays inside the body or closer than the clearance.
-    stats.contacts = push_out_of_body(plain, body, p.clearance_mm, threads);
+    stats.contacts = push_out_of_body(plain, body, p.clearance_mm, threads, &last_plain);
     double move = 0;
     for (int i = 0; i < n; ++i) {
       move = std::max(move, norm(plain[i] - x[i]));

@@ -46,8 +46,10 @@ struct ClothStats {
 [[nodiscard]] Result<ClothStats> relax_cloth(ClothMesh& cloth, const BodySdf& body, const ClothParams& params,
                                              const CancelToken* cancel);
 
-/// Pushes every vertex closer than `clearance_mm` to the body out along the body normal.
-/// Returns how many moved.
-int push_out_of_body(std::vector<Vec3>& x_mm, const BodySdf& body, double clearance_mm, int threads);
+/// Pushes every vertex closer than `clearance_mm` to the body out along the body normal; a
+/// vertex deeper inside than the SDF's band goes back to `fallback` (if given). Returns how
+/// many moved.
+int push_out_of_body(std::vector<Vec3>& x_mm, const BodySdf& body, double clearance_mm, int threads,
+                     const std::vector<Vec3>* fallback = nullptr);
 
 }  // namespace tp::geometry::internal
