@@ -26,9 +26,9 @@ Result<PatternMesh> mesh_pattern(const Pattern& pattern, const TriangulateOption
 double target_edge_for_vertex_count(const Pattern& pattern, int vertex_count) {
   double area = 0;
   for (const Piece& p : pattern.pieces) area += std::abs(signed_area(outline(p)));
-  // Refined Delaunay meshes average edges near 0.62 of the size bound; a vertex owns about
+  // Refined, smoothed Delaunay meshes average edges near 0.69 of the size bound; a vertex owns about
   // 0.87 h^2 of area for mean edge h (equilateral lattice).
-  constexpr double kMeanEdgeOverBound = 0.62;
+  constexpr double kMeanEdgeOverBound = 0.69;
   double mean_edge = std::sqrt(area / (0.866 * std::max(vertex_count, 1)));
   return mean_edge / kMeanEdgeOverBound;
 }
