@@ -45,6 +45,10 @@ enum class PngChannels {
 [[nodiscard]] Status write_png(const std::filesystem::path& path, const geometry::ImageRgba8& image,
                                PngChannels channels = PngChannels::kRgba);
 
+/// Writes a baseline 8-bit sRGB JPEG at `quality` (1..100), composited over white fabric.
+/// Fails (kIo) naming the file, (kInvalidArgument) like write_png.
+[[nodiscard]] Status write_jpeg(const std::filesystem::path& path, const geometry::ImageRgba8& image, int quality = 90);
+
 /// An image of any number of named 8-bit channels, interleaved (pixel-major), row 0 on top.
 struct ChannelImage8 {
   int width_px = 0;

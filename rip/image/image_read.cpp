@@ -168,6 +168,45 @@ class ChunkConverter {
   std::vector<std::uint16_t> rgb_;
 };
 
+/// The byte-wide path: 8-bit grey or RGB (+ straight alpha), optionally through an 8-bit transform.
+Status decode8(OIIO::ImageInput& in, const Layout& lay, void* transform, const std::string& name, ImageRgba8& img) {
+  const OIIO::ImageSpec& spec = in.spec();
+  const int nch = spec.nchannels, w = spec.width;
+  const bool grey = lay.model == ColourModel::kGrey;
+  std::vector<std::uint8_t> raw(static_cast<size_t>(w) * kChunkRows * nch);
+  std::vector<std::uint8_t> colour(static_cast<size_t>(w) * kChunkRows * 3), rgb(colour.size());
+  for (int y0 = 0; y0 < spec.height; y0 += kChunkRows) {
+    const int rows = std::min(kChunkRows, spec.height - y0);
+    const size_t px = static_cast<size_t>(rows) * w;
+    if (!in.read_scanlines(0, 0, y0 + spec.y, y0 + spec.y + rows, 0, 0, nch, OIIO::TypeDesc::UINT8, raw.data()))
+      return fail(ErrorCode::kImage,
+                  fmt::format("{}: cannot decode rows {}..{}: {}", name, y0, y0 + rows - 1, in.geterror()));
+    Rgba8* out = img.pixels.data() + static_cast<size_t>(y0) * w;
+    const int ci0 = lay.colour_index[0], ci1 = lay.colour_index[1], ci2 = lay.colour_index[2];
+    if (transform) {
+      // Gather the colour channels contiguously for lcms2, convert, then add alpha.
+      const int nc = grey ? 1 : 3;
+      for (size_t i = 0; i < px; ++i)
+        for (int c = 0; c < nc; ++c) colour[i * nc + c] = raw[i * nch + lay.colour_index[c]];
+      cmsDoTransform(transform, colour.data(), rgb.data(), static_cast<cmsUInt32Number>(px));
+      for (size_t i = 0; i < px; ++i) out[i] = {rgb[3 * i], rgb[3 * i + 1], rgb[3 * i + 2], 255};
+    } else if (grey) {
+      for (size_t i = 0; i < px; ++i) {
+        const std::uint8_t g = raw[i * nch + ci0];
+        out[i] = {g, g, g, 255};
+      }
+    } else {
+      for (size_t i = 0; i < px; ++i) {
+        const std::uint8_t* p = raw.data() + i * nch;
+        out[i] = {p[ci0], p[ci1], p[ci2], 255};
+      }
+    }
+    if (lay.alpha_index >= 0)
+      for (size_t i = 0; i < px; ++i) out[i].a = raw[i * nch + lay.alpha_index];
+  }
+  return {};
+}
+
 Result<ImageRgba8> decode(OIIO::ImageInput& in, const std::string& name) {
   const OIIO::ImageSpec spec = in.spec();
   if (spec.width <= 0 || spec.height <= 0 || spec.depth != 1 || spec.nchannels <= 0)
@@ -183,6 +222,9 @@ Result<ImageRgba8> decode(OIIO::ImageInput& in, const std::string& name) {
   if (!lay_r) return std::unexpected(lay_r.error());
   const Layout lay = *lay_r;
 
+  // 8-bit files without premultiplied alpha take a byte-wide path (JPEG and most PNG/TIFF designs).
+  const bool fast8 = spec.format == OIIO::TypeDesc::UINT8 && !lay.read_float && !lay.linear && !lay.associated_alpha &&
+                     lay.model != ColourModel::kCmyk;
   lcms::Transform xform;
   if (*prof) {
     cmsColorSpaceSignature cs = cmsGetColorSpace(prof->get());
@@ -194,7 +236,9 @@ Result<ImageRgba8> decode(OIIO::ImageInput& in, const std::string& name) {
                     colour_channels(lay.model));
     } else {
       lcms::Profile srgb(cmsCreate_sRGBProfile());
-      xform.reset(cmsCreateTransform(prof->get(), lcms_input_format(lay.model), srgb.get(), TYPE_RGB_16,
+      const cmsUInt32Number in_fmt = fast8 ? (lay.model == ColourModel::kGrey ? TYPE_GRAY_8 : TYPE_RGB_8)
+                                           : lcms_input_format(lay.model);
+      xform.reset(cmsCreateTransform(prof->get(), in_fmt, srgb.get(), fast8 ? TYPE_RGB_8 : TYPE_RGB_16,
                                      INTENT_RELATIVE_COLORIMETRIC, cmsFLAGS_BLACKPOINTCOMPENSATION));
       if (!xform) return fail(ErrorCode::kImage, name + ": embedded ICC profile cannot convert to sRGB");
     }
@@ -206,6 +250,11 @@ Result<ImageRgba8> decode(OIIO::ImageInput& in, const std::string& name) {
   img.source = name;
   img.pixels.resize(static_cast<size_t>(spec.width) * spec.height);
 
+  if (fast8) {
+    auto ok = decode8(in, lay, xform.get(), name, img);
+    if (!ok) return std::unexpected(ok.error());
+    return apply_exif_orientation(std::move(img), spec.get_int_attribute("Orientation", 1));
+  }
   const int nch = spec.nchannels, nc = colour_channels(lay.model);
   const size_t row_vals = static_cast<size_t>(spec.width) * nch;
   std::vector<std::uint16_t> raw16;

@@ -6,7 +6,8 @@
 #include <spdlog/fmt/fmt.h>
 
 #include "rip/image/image_io.h"
-#include "rip/image/internal/tiff_spec.h"
+#include "rip/image/internal/tiff_channels.h"
+#include "rip/image/tiff_band_writer.h"
 
 namespace tp::rip {
 
@@ -29,23 +30,9 @@ Status write_whole(const std::filesystem::path& path, const OIIO::ImageSpec& spe
   return {};
 }
 
-}  // namespace
-
-Status write_png(const std::filesystem::path& path, const geometry::ImageRgba8& image, PngChannels channels) {
-  const size_t n = static_cast<size_t>(std::max(image.width_px, 0)) * std::max(image.height_px, 0);
-  if (image.width_px <= 0 || image.height_px <= 0 || image.pixels.size() != n)
-    return fail(ErrorCode::kInvalidArgument,
-                fmt::format("{}: image is {}x{} but holds {} pixels", path.string(), image.width_px,
-                            image.height_px, image.pixels.size()));
-  const int nch = channels == PngChannels::kRgba ? 4 : 3;
-  OIIO::ImageSpec spec(image.width_px, image.height_px, nch, OIIO::TypeDesc::UINT8);
-  spec.attribute("oiio:ColorSpace", "sRGB");
-  if (nch == 4) {
-    // Our pixels carry straight alpha; without this OIIO would un-premultiply them once more.
-    spec.attribute("oiio:UnassociatedAlpha", 1);
-    return write_whole(path, spec, reinterpret_cast<const std::uint8_t*>(image.pixels.data()));
-  }
-  // Over white fabric: c' = c*a + 255*(1-a), rounded.
+/// RGB over white fabric: c' = c*a + 255*(1-a), rounded.
+std::vector<std::uint8_t> over_white(const geometry::ImageRgba8& image) {
+  const size_t n = image.pixels.size();
   std::vector<std::uint8_t> rgb(n * 3);
   for (size_t i = 0; i < n; ++i) {
     const geometry::Rgba8 p = image.pixels[i];
@@ -54,24 +41,53 @@ Status write_png(const std::filesystem::path& path, const geometry::ImageRgba8& 
     rgb[3 * i + 1] = static_cast<std::uint8_t>((p.g * a + 255 * ia + 127) / 255);
     rgb[3 * i + 2] = static_cast<std::uint8_t>((p.b * a + 255 * ia + 127) / 255);
   }
-  return write_whole(path, spec, rgb.data());
+  return rgb;
+}
+
+Status check_size(const std::filesystem::path& path, const geometry::ImageRgba8& image) {
+  const size_t n = static_cast<size_t>(std::max(image.width_px, 0)) * std::max(image.height_px, 0);
+  if (image.width_px <= 0 || image.height_px <= 0 || image.pixels.size() != n)
+    return fail(ErrorCode::kInvalidArgument,
+                fmt::format("{}: image is {}x{} but holds {} pixels", path.string(), image.width_px,
+                            image.height_px, image.pixels.size()));
+  return {};
+}
+
+}  // namespace
+
+Status write_jpeg(const std::filesystem::path& path, const geometry::ImageRgba8& image, int quality) {
+  if (auto ok = check_size(path, image); !ok) return ok;
+  OIIO::ImageSpec spec(image.width_px, image.height_px, 3, OIIO::TypeDesc::UINT8);
+  spec.attribute("oiio:ColorSpace", "sRGB");
+  spec.attribute("Compression", fmt::format("jpeg:{}", std::clamp(quality, 1, 100)));
+  return write_whole(path, spec, over_white(image).data());
+}
+
+Status write_png(const std::filesystem::path& path, const geometry::ImageRgba8& image, PngChannels channels) {
+  if (auto ok = check_size(path, image); !ok) return ok;
+  const int nch = channels == PngChannels::kRgba ? 4 : 3;
+  OIIO::ImageSpec spec(image.width_px, image.height_px, nch, OIIO::TypeDesc::UINT8);
+  spec.attribute("oiio:ColorSpace", "sRGB");
+  if (nch == 4) {
+    // Our pixels carry straight alpha; without this OIIO would un-premultiply them once more.
+    spec.attribute("oiio:UnassociatedAlpha", 1);
+    return write_whole(path, spec, reinterpret_cast<const std::uint8_t*>(image.pixels.data()));
+  }
+  return write_whole(path, spec, over_white(image).data());
 }
 
 Status write_tiff(const std::filesystem::path& path, const ChannelImage8& image, int bits_per_sample,
                   TiffCompression compression) {
-  auto spec = tiff_spec(path, image.width_px, image.height_px, image.channel_names, bits_per_sample, compression);
-  if (!spec) return std::unexpected(spec.error());
-  const size_t n = static_cast<size_t>(image.width_px) * image.height_px * image.channel_names.size();
+  const size_t n = static_cast<size_t>(std::max(image.width_px, 0)) * std::max(image.height_px, 0) * image.channel_names.size();
   if (image.samples.size() != n)
     return fail(ErrorCode::kInvalidArgument, fmt::format("{}: {}x{}x{} image holds {} samples", path.string(),
                                                          image.width_px, image.height_px,
                                                          image.channel_names.size(), image.samples.size()));
-  if (bits_per_sample == 8) return write_whole(path, *spec, image.samples.data());
-  // OIIO takes n-bit samples in the full 8-bit range and rescales them on write.
-  std::vector<std::uint8_t> scaled(n);
-  const unsigned maxv = (1u << bits_per_sample) - 1;
-  for (size_t i = 0; i < n; ++i) scaled[i] = static_cast<std::uint8_t>(std::min<unsigned>(image.samples[i], maxv) * 255 / maxv);
-  return write_whole(path, *spec, scaled.data());
+  auto w = TiffBandWriter::open(path, image.width_px, image.height_px, image.channel_names, bits_per_sample, compression);
+  if (!w) return std::unexpected(w.error());
+  const auto stride = static_cast<std::ptrdiff_t>(image.width_px * image.channel_names.size());
+  if (auto s = (*w)->write_rows(image.height_px, image.samples.data(), stride); !s) return s;
+  return (*w)->close();
 }
 
 Result<ChannelImage8> read_channels8(const std::filesystem::path& path) {

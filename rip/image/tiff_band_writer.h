@@ -14,21 +14,29 @@
 
 namespace tp::rip {
 
-/// A TIFF open for writing top to bottom. Samples are 8-bit interleaved per pixel, holding values
-/// 0 .. 2^bits - 1 (the file stores them at `bits_per_sample`).
+/// A TIFF (BigTIFF when the raw data could pass 3.5 GB) open for writing top to bottom: strips are
+/// compressed and written as rows arrive, the directory when it closes. Min-is-black (a sample is
+/// the ink amount), channel names in the ImageDescription ("channels=cyan,magenta,...").
+/// Samples given to write_rows are 8-bit, interleaved per pixel, holding 0 .. 2^bits - 1.
 class TiffBandWriter {
  public:
-  /// Opens `path` for a width x height image with the named channels. Fails (kIo) naming the file,
-  /// (kInvalidArgument) like write_tiff.
+  /// Opens `path` for a width x height image with the named channels, recording the resolution
+  /// when dpi_x and dpi_y are positive; BigTIFF when large or `force_bigtiff`. Fails (kIo) naming the file, (kInvalidArgument) like
+  /// write_tiff.
   [[nodiscard]] static Result<std::unique_ptr<TiffBandWriter>> open(const std::filesystem::path& path, int width_px,
                                                                     std::int64_t height_px,
                                                                     const std::vector<std::string>& channel_names,
-                                                                    int bits_per_sample, TiffCompression compression);
+                                                                    int bits_per_sample, TiffCompression compression,
+                                                                    double dpi_x = 0, double dpi_y = 0,
+                                                                    bool force_bigtiff = false);
   ~TiffBandWriter();
 
   /// Appends `rows` rows (the next ones in order), rows `row_stride_bytes` apart.
   /// Fails (kIo) naming the file and rows.
   [[nodiscard]] Status write_rows(int rows, const std::uint8_t* samples, std::ptrdiff_t row_stride_bytes);
+  /// Appends rows already packed as the file stores them: samples interleaved, `bits_per_sample`
+  /// each, MSB first, each row padded to a whole byte (how screened rows are kept in memory).
+  [[nodiscard]] Status write_packed_rows(int rows, const std::uint8_t* packed, std::ptrdiff_t row_stride_bytes);
   /// Finishes the file; fails (kIo) if rows are missing or the write fails.
   [[nodiscard]] Status close();
 

@@ -90,7 +90,8 @@ Result<RipStats> run_rip(const BandSource& source, const device::PrinterModel& p
 
   std::unique_ptr<SeparationOutput> separations;
   if (!settings.separations.contone_tiff.empty() || !settings.separations.screened_tiff.empty()) {
-    auto so = SeparationOutput::open(settings.separations, inks, ss.width_px, height, ss.bits_per_pixel);
+    auto so = SeparationOutput::open(settings.separations, inks, ss.width_px, height, ss.bits_per_pixel,
+                                     printer.dpi_x, printer.dpi_y);
     if (!so) return std::unexpected(so.error());
     separations = std::move(*so);
   }
@@ -114,7 +115,7 @@ Result<RipStats> run_rip(const BandSource& source, const device::PrinterModel& p
     stage.run(pool, y0, rows);
     if (separations) {
       auto t0 = Clock::now();
-      auto s = separations->write_band(stage, window, y0, rows);
+      auto s = separations->write_band(pool, stage, window, y0, rows);
       stats.separations_s += std::chrono::duration<double>(Clock::now() - t0).count();
       if (!s) return std::unexpected(s.error());
     }

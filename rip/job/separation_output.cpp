@@ -1,6 +1,8 @@
 // rip/job/separation_output.cpp: interleaves band rows per ink and appends them to separation TIFFs.
 #include "rip/job/internal/separation_output.h"
 
+#include <cstring>
+
 namespace tp::rip {
 
 namespace {
@@ -10,17 +12,17 @@ std::filesystem::path per_ink_path(const std::filesystem::path& p, const std::st
 }
 
 Status open_set(const std::filesystem::path& path, bool per_ink, const std::vector<std::string>& inks, int width,
-                std::int64_t height, int bits, TiffCompression compression,
+                std::int64_t height, int bits, TiffCompression compression, double dpi_x, double dpi_y,
                 std::vector<std::unique_ptr<TiffBandWriter>>& out) {
   if (path.empty()) return {};
   if (!per_ink) {
-    auto w = TiffBandWriter::open(path, width, height, inks, bits, compression);
+    auto w = TiffBandWriter::open(path, width, height, inks, bits, compression, dpi_x, dpi_y);
     if (!w) return std::unexpected(w.error());
     out.push_back(std::move(*w));
     return {};
   }
   for (const auto& ink : inks) {
-    auto w = TiffBandWriter::open(per_ink_path(path, ink), width, height, {ink}, bits, compression);
+    auto w = TiffBandWriter::open(per_ink_path(path, ink), width, height, {ink}, bits, compression, dpi_x, dpi_y);
     if (!w) return std::unexpected(w.error());
     out.push_back(std::move(*w));
   }
@@ -31,48 +33,83 @@ Status open_set(const std::filesystem::path& path, bool per_ink, const std::vect
 
 Result<std::unique_ptr<SeparationOutput>> SeparationOutput::open(const SeparationFiles& files,
                                                                  const std::vector<std::string>& inks, int width_px,
-                                                                 std::int64_t height_px, int bits_per_pixel) {
+                                                                 std::int64_t height_px, int bits_per_pixel,
+                                                                 double dpi_x, double dpi_y) {
   auto out = std::make_unique<SeparationOutput>();
   out->width_ = width_px;
   out->channels_ = static_cast<int>(inks.size());
   out->bits_ = bits_per_pixel;
+  const int per_byte = 8 / bits_per_pixel, mask = (1 << bits_per_pixel) - 1;
+  for (int v = 0; v < 256; ++v)
+    for (int k = 0; k < per_byte; ++k)
+      out->unpack_[static_cast<size_t>(v)][static_cast<size_t>(k)] =
+          static_cast<std::uint8_t>((v >> (8 - bits_per_pixel - k * bits_per_pixel)) & mask);
   auto s = open_set(files.contone_tiff, files.one_file_per_ink, inks, width_px, height_px, 8, files.compression,
-                    out->contone_);
+                    dpi_x, dpi_y, out->contone_);
   if (!s) return std::unexpected(s.error());
   s = open_set(files.screened_tiff, files.one_file_per_ink, inks, width_px, height_px, bits_per_pixel,
-               files.compression, out->screened_);
+               files.compression, dpi_x, dpi_y, out->screened_);
   if (!s) return std::unexpected(s.error());
   return out;
 }
 
-Status SeparationOutput::write_band(const BandStage& band, const ScreenedWindow& window, std::int64_t y0, int rows) {
+Status SeparationOutput::write_band(ThreadPool& pool, const BandStage& band, const ScreenedWindow& window,
+                                    std::int64_t y0, int rows) {
   const int w = width_, nc = channels_;
-  // Samples of ink c for pixel x of band row r, into the interleaved layout of writer `set`.
-  auto emit = [&](std::vector<std::unique_ptr<TiffBandWriter>>& set, auto&& sample) -> Status {
-    if (set.empty()) return {};
-    const bool per_ink = set.size() > 1 || nc == 1;
-    const int file_channels = per_ink ? 1 : nc;
-    rows_.resize(static_cast<size_t>(rows) * w * file_channels);
-    for (size_t f = 0; f < set.size(); ++f) {
+  const bool per_ink = contone_.size() > 1 || screened_.size() > 1 || nc == 1;
+  const int file_channels = per_ink ? 1 : nc;
+  // Writes the band to `set`, filling each file's interleaved rows with `fill(r, c, dst, step)`:
+  // ink c of band row r into dst[x * step] for every column x. Files are independent: one per
+  // thread at a time, each with its own buffer.
+  auto emit = [&](std::vector<std::unique_ptr<TiffBandWriter>>& set, auto&& fill) -> Status {
+    if (rows_.size() < set.size()) rows_.resize(set.size());
+    std::vector<Status> status(set.size());
+    pool.parallel_for(static_cast<int>(set.size()), [&](int f, int) {
+      std::vector<std::uint8_t>& buf = rows_[static_cast<size_t>(f)];
+      buf.resize(static_cast<size_t>(rows) * w * file_channels);
       for (int r = 0; r < rows; ++r) {
-        std::uint8_t* dst = rows_.data() + static_cast<size_t>(r) * w * file_channels;
-        for (int c = 0; c < nc; ++c) {
-          if (per_ink && c != static_cast<int>(f)) continue;
-          const int slot = per_ink ? 0 : c;
-          for (int x = 0; x < w; ++x) dst[static_cast<size_t>(x) * file_channels + slot] = sample(r, c, x);
+        std::uint8_t* dst = buf.data() + static_cast<size_t>(r) * w * file_channels;
+        if (per_ink) {
+          fill(r, f, dst, 1);
+        } else {
+          for (int c = 0; c < nc; ++c) fill(r, c, dst + c, nc);
         }
       }
-      auto s = set[f]->write_rows(rows, rows_.data(), static_cast<std::ptrdiff_t>(w) * file_channels);
+      status[static_cast<size_t>(f)] = set[static_cast<size_t>(f)]->write_rows(rows, buf.data(), static_cast<std::ptrdiff_t>(w) * file_channels);
+    });
+    for (auto& s : status)
       if (!s) return s;
-    }
     return {};
   };
-  auto s = emit(contone_, [&](int r, int c, int x) { return band.contone(r, c)[x]; });
+  auto s = emit(contone_, [&](int r, int c, std::uint8_t* dst, int step) {
+    const std::uint8_t* src = band.contone(r, c);
+    if (step == 1) {
+      std::memcpy(dst, src, static_cast<size_t>(w));
+      return;
+    }
+    for (int x = 0; x < w; ++x) dst[static_cast<size_t>(x) * step] = src[x];
+  });
   if (!s) return s;
-  const int bits = bits_, per_byte = 8 / bits_, mask = (1 << bits_) - 1;
-  return emit(screened_, [&](int r, int c, int x) {
-    const std::uint8_t byte = window.row(y0 + r, c)[x / per_byte];
-    return static_cast<std::uint8_t>((byte >> (8 - bits - (x % per_byte) * bits)) & mask);
+  if (per_ink) {
+    // One ink per file: the window's packed rows are the file's rows as they stand.
+    std::vector<Status> status(screened_.size());
+    pool.parallel_for(static_cast<int>(screened_.size()), [&](int f, int) {
+      Status st;
+      for (int r = 0; r < rows && st; ++r) st = screened_[static_cast<size_t>(f)]->write_packed_rows(1, window.row(y0 + r, f), 0);
+      status[static_cast<size_t>(f)] = st;
+    });
+    for (auto& st : status)
+      if (!st) return st;
+    return {};
+  }
+  // All inks in one file: unpack whole bytes through a table (8 / bits codes per byte).
+  const int per_byte = 8 / bits_;
+  return emit(screened_, [&](int r, int c, std::uint8_t* dst, int step) {
+    const std::uint8_t* src = window.row(y0 + r, c);
+    const int full = w / per_byte;
+    for (int b = 0; b < full; ++b)
+      for (int k = 0; k < per_byte; ++k) dst[(static_cast<size_t>(b) * per_byte + k) * step] = unpack_[src[b]][static_cast<size_t>(k)];
+    for (int x = full * per_byte; x < w; ++x) dst[static_cast<size_t>(x) * step] = unpack_[src[full]][static_cast<size_t>(x - full * per_byte)];
   });
 }
 
