@@ -74,6 +74,40 @@ std::vector<std::vector<Vec2>> place_text(const std::string& text, double h, con
   return lines;
 }
 
+bool inside(const Polygon& poly, Vec2 p) {
+  bool in = false;
+  for (size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++)
+    if ((poly[i].y > p.y) != (poly[j].y > p.y) &&
+        p.x < (poly[j].x - poly[i].x) * (p.y - poly[i].y) / (poly[j].y - poly[i].y) + poly[i].x)
+      in = !in;
+  return in;
+}
+
+double distance_to(const Polygon& poly, Vec2 p) {
+  double best = 1e300;
+  for (size_t i = 0; i < poly.size(); ++i) {
+    const Vec2 a = poly[i], d = poly[(i + 1) % poly.size()] - a;
+    const double len2 = dot(d, d);
+    const double t = len2 > 0 ? std::clamp(dot(p - a, d) / len2, 0.0, 1.0) : 0.0;
+    best = std::min(best, norm(p - (a + d * t)));
+  }
+  return best;
+}
+
+// Whether every stroke (points and segment midpoints) lies on the wanted side of the seam line
+// (outside for the allowance, inside for the fallback) between min_mm and max_mm from it: a label
+// on a gently curved stretch must not touch the seam line nor reach the cut line.
+bool fits(const std::vector<std::vector<Vec2>>& lines, const Polygon& seam, bool outside, double min_mm, double max_mm) {
+  for (const auto& l : lines)
+    for (size_t i = 0; i < l.size(); ++i)
+      for (Vec2 p : {l[i], i + 1 < l.size() ? (l[i] + l[i + 1]) * 0.5 : l[i]}) {
+        if (inside(seam, p) == outside) return false;
+        const double d = distance_to(seam, p);
+        if (d < min_mm || d > max_mm) return false;
+      }
+  return true;
+}
+
 std::vector<std::vector<Vec2>> arrow(Vec2 c, Vec2 g, double len) {
   const Vec2 a = c - g * (0.5 * len), b = c + g * (0.5 * len);
   const double head = std::min(3.0, len / 4);
@@ -99,18 +133,26 @@ PieceMarks piece_marks(const Piece& piece, const PieceAllowance& allowance, cons
   texts.push_back(full);
   texts.push_back(upper(piece.name));
 
+  const Polygon seam = outline(piece);
+  std::vector<const Run*> by_length;
+  for (const Run& r : runs) by_length.push_back(&r);
+  std::stable_sort(by_length.begin(), by_length.end(), [](const Run* a, const Run* b) { return a->length > b->length; });
   std::optional<Run> label_run;
   for (const std::string& text : texts) {
     for (double h = f.label_height_mm; h >= kMinLabel_mm - 1e-9 && !label_run; h *= 0.8) {
       const double tw = text_width_mm(text, h);
-      const Run* best = nullptr;
-      for (const Run& r : runs)
-        if (r.width >= h + 2 * kMargin_mm && r.length >= tw + 2 * kMargin_mm && (!best || r.length > best->length)) best = &r;
-      if (!best) continue;
-      label_run = *best;
-      out.text = text;
-      out.stroke_width_mm = std::max(0.25, h / 10);
-      out.label = place_text(text, h, *best, 0.5 * best->length, 0.5 * (best->width + h));
+      const double half_stroke = 0.5 * std::max(0.25, h / 10);
+      // The longest run that holds the text, checked against the real (curved) seam line.
+      for (const Run* r : by_length) {
+        if (r->width < h + 2 * kMargin_mm || r->length < tw + 2 * kMargin_mm) continue;
+        auto lines = place_text(text, h, *r, 0.5 * r->length, 0.5 * (r->width + h));
+        if (!fits(lines, seam, true, kMargin_mm * 0.5 + half_stroke, r->width - kMargin_mm * 0.5 - half_stroke)) continue;
+        label_run = *r;
+        out.text = text;
+        out.stroke_width_mm = std::max(0.25, h / 10);
+        out.label = std::move(lines);
+        break;
+      }
     }
     if (label_run) break;
   }
@@ -149,7 +191,7 @@ PieceMarks piece_marks(const Piece& piece, const PieceAllowance& allowance, cons
       len = std::min(len, free * std::max(std::abs(dot(g, r.dir)), 1e-3));
       centre = r.start + r.dir * (0.5 * free + kMargin_mm) + n * (0.5 * r.width);
     }
-    if (len > best_len) {
+    if (len > best_len && fits(arrow(centre, g, len), seam, true, 0.5 * kMargin_mm, r.width - 0.5 * kMargin_mm)) {
       best_len = len;
       best_centre = centre;
     }

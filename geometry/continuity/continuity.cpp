@@ -9,6 +9,7 @@
 #include <tuple>
 
 #include "geometry/allowance/allowance_widths.h"
+#include "geometry/allowance/marks.h"
 #include "geometry/continuity/ciede2000.h"
 #include "geometry/design/internal/allowance_source.h"
 #include "geometry/design/internal/band_mesh.h"
@@ -34,9 +35,20 @@ Rgba8 pixel_at(const PieceRenderer& r, int piece, Vec2 p, double mm_per_px) {
   return px;
 }
 
-double difference(const PieceRenderer& r, int pa, Vec2 a, int pb, Vec2 b, double mm_per_px) {
-  return ciede2000(srgb_over_white_to_lab(pixel_at(r, pa, a, mm_per_px)),
-                   srgb_over_white_to_lab(pixel_at(r, pb, b, mm_per_px)));
+// How many of the worst sample pairs the report keeps.
+constexpr size_t kWorstKept = 8;
+
+// Renders both pixels, returns their difference and keeps the pair if it is among the worst.
+double difference(const Pattern& pattern, const PieceRenderer& r, int pa, Vec2 a, int pb, Vec2 b, double mm_per_px,
+                  std::vector<SamplePair>& worst) {
+  const Rgba8 ca = pixel_at(r, pa, a, mm_per_px), cb = pixel_at(r, pb, b, mm_per_px);
+  const double de = ciede2000(srgb_over_white_to_lab(ca), srgb_over_white_to_lab(cb));
+  if (worst.size() < kWorstKept || de > worst.back().de00) {
+    worst.push_back({de, pattern.pieces[static_cast<size_t>(pa)].name, pattern.pieces[static_cast<size_t>(pb)].name, a, b, ca, cb});
+    std::sort(worst.begin(), worst.end(), [](const SamplePair& x, const SamplePair& y) { return x.de00 > y.de00; });
+    if (worst.size() > kWorstKept) worst.pop_back();
+  }
+  return de;
 }
 
 double distance_to_outline(const Polygon& poly, Vec2 p) {
@@ -106,7 +118,8 @@ Result<ContinuityReport> measure_continuity(const Pattern& pattern, const Garmen
       for (int i = 0; i < n; ++i) {
         const double t = (i + 0.5) / n;
         const double tb = seg.partner_reversed ? 1 - t : t;
-        const double de = difference(renderer, p, a0 + (a1 - a0) * t, seg.partner_piece, b0 + (b1 - b0) * tb, mm_per_px);
+        const double de = difference(pattern, renderer, p, a0 + (a1 - a0) * t, seg.partner_piece, b0 + (b1 - b0) * tb,
+                                     mm_per_px, report.worst_seam_samples);
         bucket.push_back(de);
         all_seams.push_back(de);
       }
@@ -126,6 +139,25 @@ Result<ContinuityReport> measure_continuity(const Pattern& pattern, const Garmen
       auto widths = resolve_allowance(pattern, p, finishing);
       if (!widths) return std::unexpected(widths.error().with_context("continuity"));
       const Polygon& cut = renderer.cut_outline_mm(p);
+      // Printed labels and grain arrows sit in the allowance on purpose: not part of the copy.
+      std::vector<std::array<Vec2, 2>> marks;
+      double mark_reach = 0;
+      if (finishing.marks == MarkMode::kPrinted) {
+        const PieceMarks pm = piece_marks(pattern.pieces[static_cast<size_t>(p)], *widths, pattern.size, finishing);
+        mark_reach = 0.5 * pm.stroke_width_mm + 1.5 * mm_per_px;
+        for (const auto* set : {&pm.label, &pm.grain_arrow})
+          for (const auto& l : *set)
+            for (size_t i = 0; i + 1 < l.size(); ++i) marks.push_back({l[i], l[i + 1]});
+      }
+      auto near_mark = [&](Vec2 x) {
+        for (const auto& m : marks) {
+          const Vec2 d = m[1] - m[0];
+          const double len2 = dot(d, d);
+          const double t = len2 > 0 ? std::clamp(dot(x - m[0], d) / len2, 0.0, 1.0) : 0.0;
+          if (norm(x - (m[0] + d * t)) < mark_reach) return true;
+        }
+        return false;
+      };
       const auto& chart = surface.chart(p);
       const auto& V = chart.piece->mesh.vertices_mm;
       std::map<std::tuple<int, int, int>, std::vector<double>> groups;
@@ -143,9 +175,18 @@ Result<ContinuityReport> measure_continuity(const Pattern& pattern, const Garmen
                 std::abs(back.d_mm - sc.d_mm) > kRoundTrip_mm)
               continue;
             if (!internal::inside_polygon(cut, x) || distance_to_outline(cut, x) < kEdgeMargin_px * mm_per_px) continue;
+            if (near_mark(x)) continue;
             const auto s = source.source(p, sc);
             if (s.location.triangle < 0 || norm(surface.chart_position(s.piece, s.location) - s.position_mm) > kClamp_mm) continue;
-            const double de = difference(renderer, p, x, s.piece, s.position_mm, mm_per_px);
+            // A pixel astride a line where the print source changes (the mitre at a corner between
+            // a seam and a hem, or between two partners) shows either side: not a copy to measure.
+            bool astride = false;
+            for (Vec2 o : {Vec2{0.5, 0}, Vec2{-0.5, 0}, Vec2{0, 0.5}, Vec2{0, -0.5}}) {
+              const auto n = source.source(p, x + o * mm_per_px);
+              astride |= n.piece != s.piece || n.category != s.category;
+            }
+            if (astride) continue;
+            const double de = difference(pattern, renderer, p, x, s.piece, s.position_mm, mm_per_px, report.worst_allowance_samples);
             groups[{seg.edge, s.piece, s.category}].push_back(de);
             all_allowance.push_back(de);
           }

@@ -37,6 +37,14 @@ struct AllowanceContinuity {
   DeltaEStats de00;
 };
 
+/// A sample pair, for finding where a difference comes from.
+struct SamplePair {
+  double de00 = 0;
+  std::string piece_a, piece_b;
+  Vec2 at_a_mm, at_b_mm;
+  Rgba8 colour_a, colour_b;
+};
+
 /// The job report's `seams` and `allowance` figures.
 struct ContinuityReport {
   double dpi = 0;
@@ -44,6 +52,8 @@ struct ContinuityReport {
   DeltaEStats allowance;   ///< over all allowance samples
   std::vector<SeamContinuity> seam_list;
   std::vector<AllowanceContinuity> allowance_list;
+  std::vector<SamplePair> worst_seam_samples;       ///< the largest few, largest first
+  std::vector<SamplePair> worst_allowance_samples;
 };
 
 struct ContinuityOptions {
@@ -54,8 +64,9 @@ struct ContinuityOptions {
 /// Samples every stitched seam at pairs of pixels centred on the same 3D point in both pieces,
 /// and every allowance at a few depths against the source pixel its print was copied from,
 /// rendering each at `dpi` through `renderer`, composited over white; CIEDE2000 per pair.
-/// Samples where the allowance is cut away (outside the cut outline, folded-over concave parts)
-/// or where the source point had to be clamped into a narrow partner are skipped.
+/// Samples where the allowance is cut away (outside the cut outline, folded-over concave parts),
+/// where the source point had to be clamped into a narrow partner, whose pixel straddles a
+/// line where the source changes (mitres at corners), or on a printed label are skipped.
 /// Fails when the garment does not match the pattern or dpi is not positive.
 [[nodiscard]] Result<ContinuityReport> measure_continuity(const Pattern& pattern, const Garment& garment,
                                                          const Finishing& finishing, const PieceRenderer& renderer,

@@ -46,11 +46,13 @@ std::string svg_text(const CutJob& job) {
   extent.add({job.fabric_width_mm, job.marker_length_mm});
   for (const PieceCut& p : job.pieces)
     for (Vec2 v : p.cut_line) extent.add(p.piece_to_roll.apply(v));
-  const double w = std::max(extent.max.x, job.fabric_width_mm), h = std::max(extent.max.y, job.marker_length_mm);
+  // The roll, grown to any piece that overhangs it (a marker is not validated here).
+  const double x0 = std::min(0.0, extent.min.x), y0 = std::min(0.0, extent.min.y);
+  const double w = extent.max.x - x0, h = extent.max.y - y0;
   std::string s;
   s += "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
   s += "<svg xmlns=\"http://www.w3.org/2000/svg\" version=\"1.1\" width=\"" + num(w) + "mm\" height=\"" + num(h) +
-       "mm\" viewBox=\"0 0 " + num(w) + " " + num(h) + "\">\n";
+       "mm\" viewBox=\"" + num(x0) + " " + num(y0) + " " + num(w) + " " + num(h) + "\">\n";
   s += "<title>" + escape(job.job_name.empty() ? job.pattern_name : job.job_name) + " cut contours (mm)</title>\n";
   s += "<style>.cut{fill:none;stroke:#000;stroke-width:0.3}.sew{fill:none;stroke:#888;stroke-width:0.2;"
        "stroke-dasharray:2,1}.notch{fill:none;stroke:#c00;stroke-width:0.3}.grain{stroke:#06c;stroke-width:0.3}"

@@ -45,6 +45,70 @@ AllowanceSource::AllowanceSource(const GarmentSurface& surface) : surface_(surfa
   }
 }
 
+namespace {
+
+// Solutions (t, d) of x = p0 + t e + d (b + t c) for one quad; returns how many.
+int solve_quad(Vec2 x, Vec2 p0, Vec2 e, Vec2 b, Vec2 cc, double (&t_out)[2], double (&d_out)[2]) {
+  const Vec2 q = x - p0;
+  const double qa = -cross(e, cc);
+  const double qb = cross(q, cc) - cross(e, b);
+  const double qc = cross(q, b);
+  double roots[2];
+  int count = 0;
+  if (std::abs(qa) < 1e-12 * (std::abs(qb) + 1e-12)) {
+    if (std::abs(qb) > 0) roots[count++] = -qc / qb;
+  } else {
+    const double disc = qb * qb - 4 * qa * qc;
+    if (disc >= 0) {
+      const double sq = std::sqrt(disc);
+      // Numerically stable pair of roots.
+      const double tmp = -0.5 * (qb + std::copysign(sq, qb));
+      if (tmp != 0) roots[count++] = qc / tmp;
+      if (qa != 0) roots[count++] = tmp / qa;
+    }
+  }
+  int n = 0;
+  for (int r = 0; r < count; ++r) {
+    const Vec2 dir = b + cc * roots[r];
+    const double dd = dot(dir, dir);
+    if (dd <= 0) continue;
+    t_out[n] = roots[r];
+    d_out[n] = dot(q - e * roots[r], dir) / dd;
+    ++n;
+  }
+  return n;
+}
+
+}  // namespace
+
+SeamCoordinates AllowanceSource::seam_coordinates_in(int piece, int segment, Vec2 x) const {
+  const PieceChart& c = surface_.chart(piece);
+  const auto& m = mitre_[static_cast<size_t>(piece)];
+  const size_t n = c.loop.size();
+  const size_t k = static_cast<size_t>(segment);
+  const Vec2 p0 = vertex_position(surface_, piece, c.loop[k]);
+  const Vec2 p1 = vertex_position(surface_, piece, c.loop[(k + 1) % n]);
+  double t[2], d[2];
+  const int count = solve_quad(x, p0, p1 - p0, m[k], m[(k + 1) % n] - m[k], t, d);
+  // The root nearest the quad (distance of t from 0..1), for points just past its mitre lines.
+  SeamCoordinates best{segment, 0, 0};
+  double best_off = std::numeric_limits<double>::infinity();
+  for (int r = 0; r < count; ++r) {
+    const double off = std::max({0.0, -t[r], t[r] - 1}) + (d[r] < 0 ? -d[r] : 0.0);
+    if (off < best_off) {
+      best_off = off;
+      best = {segment, t[r], d[r]};
+    }
+  }
+  if (count == 0) {
+    const Vec2 e = p1 - p0;
+    const double len2 = dot(e, e);
+    const double tn = len2 > 0 ? dot(x - p0, e) / len2 : 0.0;
+    best = {segment, tn, norm(x - (p0 + e * tn))};
+  }
+  return best;
+}
+
 SeamCoordinates AllowanceSource::seam_coordinates(int piece, Vec2 x) const {
   const PieceChart& c = surface_.chart(piece);
   const auto& m = mitre_[static_cast<size_t>(piece)];
@@ -70,32 +134,11 @@ SeamCoordinates AllowanceSource::seam_coordinates(int piece, Vec2 x) const {
     const double reach = best_d * kMaxMitre + 1e-9;
     if (dist2 > reach * reach) continue;
     // Solve x = p0 + t e + d (b + t c) for t, d: the quad between the mitre rays at both ends.
-    const Vec2 q = x - p0, b = m[k], cc = m[(k + 1) % n] - m[k];
-    const double qa = -cross(e, cc);
-    const double qb = cross(q, cc) - cross(e, b);
-    const double qc = cross(q, b);
-    double roots[2];
-    int count = 0;
-    if (std::abs(qa) < 1e-12 * (std::abs(qb) + 1e-12)) {
-      if (std::abs(qb) > 0) roots[count++] = -qc / qb;
-    } else {
-      const double disc = qb * qb - 4 * qa * qc;
-      if (disc >= 0) {
-        const double sq = std::sqrt(disc);
-        // Numerically stable pair of roots.
-        const double tmp = -0.5 * (qb + std::copysign(sq, qb));
-        if (tmp != 0) roots[count++] = qc / tmp;
-        if (qa != 0) roots[count++] = tmp / qa;
-      }
-    }
+    double ts[2], ds[2];
+    const int count = solve_quad(x, p0, e, m[k], m[(k + 1) % n] - m[k], ts, ds);
     for (int r = 0; r < count; ++r) {
-      const double t = roots[r];
-      if (t < -kParamSlack || t > 1 + kParamSlack) continue;
-      const Vec2 dir = b + cc * t;
-      const double dd = dot(dir, dir);
-      if (dd <= 0) continue;
-      const double d = dot(q - e * t, dir) / dd;
-      if (d < -1e-9) continue;
+      const double t = ts[r], d = ds[r];
+      if (t < -kParamSlack || t > 1 + kParamSlack || d < -1e-9) continue;
       if (d < best_d) {
         best_d = d;
         best = {static_cast<int>(k), std::clamp(t, 0.0, 1.0), std::max(0.0, d)};

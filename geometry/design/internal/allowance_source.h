@@ -35,6 +35,10 @@ class AllowanceSource {
   /// Seam coordinates of `p` (piece mm, outside or on the seam line) relative to `piece`'s boundary.
   SeamCoordinates seam_coordinates(int piece, Vec2 p) const;
 
+  /// Seam coordinates of `p` within one boundary segment's mitred quad, t extrapolated past
+  /// 0..1 when p lies beyond the quad's mitre lines (for a triangle straddling them).
+  SeamCoordinates seam_coordinates_in(int piece, int segment, Vec2 p) const;
+
   /// The point at seam coordinates `c` of `piece`, offset by c.d_mm outwards (negative: inwards).
   Vec2 seam_point(int piece, const SeamCoordinates& c) const;
 

@@ -52,7 +52,7 @@ class Builder {
       fill(x);
     }
     if (cross(v[1].pos - v[0].pos, v[2].pos - v[0].pos) <= 0) return;
-    refine(v, false, 0);
+    refine(v, 0);
   }
 
   void add_band_triangle(const std::array<Vec2, 3>& t) {
@@ -64,9 +64,7 @@ class Builder {
       out_.layer_start.push_back(static_cast<std::uint32_t>(out_.layers.size()));
       return;
     }
-    std::array<Vtx, 3> v;
-    for (int k = 0; k < 3; ++k) v[static_cast<size_t>(k)] = band_vertex(t[static_cast<size_t>(k)]);
-    refine(v, true, 0);
+    refine_band(t, 0);
   }
 
  private:
@@ -77,10 +75,13 @@ class Builder {
       if (layers_[l].texture) x.f[l] = layers_[l].texture->eval(x.sp);
   }
 
-  Vtx band_vertex(Vec2 p) const {
+  // A band point mapped through boundary segment `segment`'s quad: every point of one render
+  // triangle uses the same quad, so a triangle touching a mitre line where the print source
+  // changes never blends the two sources.
+  Vtx band_vertex(Vec2 p, int segment) const {
     Vtx x;
     x.pos = p;
-    const AllowanceSample s = ctx_.allowance->source(piece_, p);
+    const AllowanceSample s = ctx_.allowance->source(piece_, ctx_.allowance->seam_coordinates_in(piece_, segment, p));
     x.piece = s.piece;
     x.loc = s.location;
     if (x.piece < 0 || x.loc.triangle < 0) {
@@ -92,8 +93,8 @@ class Builder {
     return x;
   }
 
-  Vtx midpoint(const Vtx& a, const Vtx& b, bool band) const {
-    if (band) return band_vertex((a.pos + b.pos) * 0.5);
+  Vtx midpoint(const Vtx& a, const Vtx& b, int band_segment) const {
+    if (band_segment >= 0) return band_vertex((a.pos + b.pos) * 0.5, band_segment);
     // Inside one chart triangle everything but the layers' own maps is affine.
     Vtx m;
     m.pos = (a.pos + b.pos) * 0.5;
@@ -130,17 +131,38 @@ class Builder {
     return e;
   }
 
-  void refine(const std::array<Vtx, 3>& v, bool band, int depth) {
+  void refine(const std::array<Vtx, 3>& v, int depth) {
     const double longest = std::max({norm(v[1].pos - v[0].pos), norm(v[2].pos - v[1].pos), norm(v[0].pos - v[2].pos)});
-    if (depth < ctx_.max_depth && longest > (band ? ctx_.band_min_edge_mm : ctx_.min_edge_mm)) {
-      const Vtx m01 = midpoint(v[0], v[1], band), m12 = midpoint(v[1], v[2], band), m20 = midpoint(v[2], v[0], band);
-      const double e = std::max({error(v[0], v[1], m01, band), error(v[1], v[2], m12, band), error(v[2], v[0], m20, band)});
+    if (depth < ctx_.max_depth && longest > ctx_.min_edge_mm) {
+      const Vtx m01 = midpoint(v[0], v[1], -1), m12 = midpoint(v[1], v[2], -1), m20 = midpoint(v[2], v[0], -1);
+      const double e = std::max({error(v[0], v[1], m01, false), error(v[1], v[2], m12, false), error(v[2], v[0], m20, false)});
       if (e > 1) {
         ++stats_.splits;
-        refine({v[0], m01, m20}, band, depth + 1);
-        refine({m01, v[1], m12}, band, depth + 1);
-        refine({m20, m12, v[2]}, band, depth + 1);
-        refine({m01, m12, m20}, band, depth + 1);
+        refine({v[0], m01, m20}, depth + 1);
+        refine({m01, v[1], m12}, depth + 1);
+        refine({m20, m12, v[2]}, depth + 1);
+        refine({m01, m12, m20}, depth + 1);
+        return;
+      }
+    }
+    emit(v);
+  }
+
+  // Band triangles pick their boundary segment from their centroid, then split like chart ones.
+  void refine_band(const std::array<Vec2, 3>& p, int depth) {
+    const int seg = ctx_.allowance->seam_coordinates(piece_, (p[0] + p[1] + p[2]) / 3.0).segment;
+    const std::array<Vtx, 3> v{band_vertex(p[0], seg), band_vertex(p[1], seg), band_vertex(p[2], seg)};
+    const double longest = std::max({norm(p[1] - p[0]), norm(p[2] - p[1]), norm(p[0] - p[2])});
+    if (depth < ctx_.max_depth && longest > ctx_.band_min_edge_mm) {
+      const Vtx m01 = midpoint(v[0], v[1], seg), m12 = midpoint(v[1], v[2], seg), m20 = midpoint(v[2], v[0], seg);
+      const double e = std::max({error(v[0], v[1], m01, true), error(v[1], v[2], m12, true), error(v[2], v[0], m20, true)});
+      if (e > 1) {
+        ++stats_.splits;
+        const Vec2 a = m01.pos, b = m12.pos, c = m20.pos;
+        refine_band({p[0], a, c}, depth + 1);
+        refine_band({a, p[1], b}, depth + 1);
+        refine_band({c, b, p[2]}, depth + 1);
+        refine_band({a, b, c}, depth + 1);
         return;
       }
     }
