@@ -7,11 +7,13 @@
 
 #include <lcms2.h>
 #include <spdlog/fmt/fmt.h>
+#include <spdlog/fmt/ranges.h>
 #if defined(__SSE2__)
 #include <emmintrin.h>
 #endif
 
 #include "rip/colour/internal/lcms_handles.h"
+#include "rip/colour/multi_ink_profile.h"
 #include "rip/common/internal/log.h"
 
 namespace tp::rip {
@@ -113,20 +115,35 @@ Result<InkConverter> InkConverter::create(const InkConverterSettings& s) {
   t->curves = s.linearisation;
   for (const auto& n : s.ink_names) t->black.push_back(is_black(n));
 
-  // The printer profile: named, or the default CMYK one for a plain CMYK printer.
+  // The printer profile: named; or the default CMYK one for a plain CMYK printer; or, for inks
+  // with typical solids, one built from them.
   std::filesystem::path path = s.profile_path;
-  if (path.empty()) {
-    const std::vector<std::string> cmyk{"cyan", "magenta", "yellow", "black"};
-    if (s.ink_names != cmyk)
-      return fail(ErrorCode::kColour, "ink converter: inks other than cyan, magenta, yellow, black need a printer profile");
-    path = kDefaultCmykProfilePath;
-  }
-  const std::string pname = path.string();
+  std::string pname = path.string();
+  const std::vector<std::string> cmyk{"cyan", "magenta", "yellow", "black"};
   std::error_code ec;
-  if (!std::filesystem::is_regular_file(path, ec))
-    return fail(ErrorCode::kColour, pname + ": no such printer profile");
-  t->profile.reset(cmsOpenProfileFromFile(pname.c_str(), "r"));
-  if (!t->profile) return fail(ErrorCode::kColour, pname + ": not a readable ICC profile");
+  if (path.empty() && s.ink_names == cmyk && std::filesystem::is_regular_file(kDefaultCmykProfilePath, ec)) {
+    path = kDefaultCmykProfilePath;
+    pname = path.string();
+  }
+  if (path.empty()) {
+    MultiInkProfileSpec spec;
+    for (const auto& name : s.ink_names) {
+      auto solid = typical_ink(name);
+      if (!solid)
+        return fail(ErrorCode::kColour, fmt::format("ink converter: ink '{}' has no typical colour; name a printer profile", name));
+      spec.inks.push_back(*solid);
+    }
+    auto bytes = build_multi_ink_profile(spec);
+    if (!bytes) return std::unexpected(bytes.error());
+    pname = "synthetic profile of inks " + fmt::format("{}", fmt::join(s.ink_names, ","));
+    t->profile.reset(cmsOpenProfileFromMem(bytes->data(), static_cast<cmsUInt32Number>(bytes->size())));
+    if (!t->profile) return fail(ErrorCode::kColour, pname + ": lcms2 cannot read it back");
+    logger().info("no printer profile named: using a {}", pname);
+  } else {
+    if (!std::filesystem::is_regular_file(path, ec)) return fail(ErrorCode::kColour, pname + ": no such printer profile");
+    t->profile.reset(cmsOpenProfileFromFile(pname.c_str(), "r"));
+    if (!t->profile) return fail(ErrorCode::kColour, pname + ": not a readable ICC profile");
+  }
   if (cmsGetDeviceClass(t->profile.get()) != cmsSigOutputClass)
     return fail(ErrorCode::kColour, pname + ": not an output (printer) profile");
   const int prof_channels = static_cast<int>(cmsChannelsOf(cmsGetColorSpace(t->profile.get())));

@@ -24,7 +24,8 @@ enum class RenderingIntent { kPerceptual, kRelativeColorimetric, kSaturation, kA
 /// How to separate colours into inks.
 struct InkConverterSettings {
   /// Printer output profile with one channel per ink, in ink order. Empty: kDefaultCmykProfilePath
-  /// when the inks are cyan, magenta, yellow, black; otherwise required.
+  /// when the inks are cyan, magenta, yellow, black (and it is installed); otherwise a profile
+  /// built from the inks' typical solids (build_multi_ink_profile), if every ink has one.
   std::filesystem::path profile_path;
   std::vector<std::string> ink_names{"cyan", "magenta", "yellow", "black"};
   RenderingIntent intent = RenderingIntent::kPerceptual;

@@ -168,9 +168,11 @@ TEST(InkConverter, ProfileErrorsNameTheFile) {
   ASSERT_FALSE(c);
   EXPECT_NE(c.error().message.find("4 colourants"), std::string::npos) << c.error().message;
 
-  InkConverterSettings no_profile;
-  no_profile.ink_names = {"cyan", "magenta", "yellow", "black", "orange"};
-  EXPECT_FALSE(InkConverter::create(no_profile));
+  InkConverterSettings unknown_ink;  // no profile and an ink without a typical colour
+  unknown_ink.ink_names = {"cyan", "magenta", "yellow", "black", "sparkle"};
+  auto d = InkConverter::create(unknown_ink);
+  ASSERT_FALSE(d);
+  EXPECT_NE(d.error().message.find("'sparkle'"), std::string::npos) << d.error().message;
 
   InkConverterSettings bad_limit;
   bad_limit.ink_limit_percent = 50;
