@@ -37,6 +37,8 @@ struct DesignLayerSpec {
   std::string procedural;                             ///< or a procedural texture: "marbling", "stripes", ...
   int procedural_seed = 1;
   int procedural_size_px = 1024;
+  int procedural_count = 12;                          ///< stripes: stripe pairs per tile
+  bool procedural_vertical = true;                    ///< stripes: run along the tile height
   std::array<double, 3> centre_mm{0, 0, 0};
   std::array<double, 3> normal{0, 0, 1};
   std::array<double, 3> up{0, 1, 0};
@@ -69,8 +71,7 @@ struct FinishingSpec {
   std::vector<EdgeAllowance> edges;
   std::string corner_style = "mitre";                 ///< "mitre", "square", "mirror"
   bool notches = true;
-  std::string labels = "inside";                      ///< "inside", "separate", "none"
-  bool grain_line = true;
+  std::string labels = "inside";                      ///< label and grain arrow: "inside", "separate", "none"
 };
 
 struct DefectZone {

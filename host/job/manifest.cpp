@@ -84,8 +84,10 @@ void read_layer(FieldReader l, const JobPackage* pkg, DesignLayerSpec& s) {
   auto image_source = [&]() {
     known.insert({"image", "procedural"});
     if (auto p = l.object("procedural", false)) {
-      p->reject_unknown({"kind", "seed", "size_px"});
-      if (auto k = p->choice("kind", true, {"marbling", "stripes", "motif", "checker"})) s.procedural = *k;
+      p->reject_unknown({"kind", "seed", "size_px", "count", "vertical"});
+      if (auto k = p->choice("kind", true, {"marbling", "stripes", "motif"})) s.procedural = *k;
+      if (auto v = p->integer("count", false, 1, 1000)) s.procedural_count = *v;
+      if (auto v = p->boolean("vertical", false)) s.procedural_vertical = *v;
       if (auto v = p->integer("seed", false, 0, 1 << 30)) s.procedural_seed = *v;
       if (auto v = p->integer("size_px", false, 16, 16384)) s.procedural_size_px = *v;
     }
@@ -135,13 +137,12 @@ void read_layer(FieldReader l, const JobPackage* pkg, DesignLayerSpec& s) {
 }
 
 void read_finishing(FieldReader f, FinishingSpec& s) {
-  f.reject_unknown({"seam_allowance", "hem_allowance", "edges", "corner_style", "notches", "labels", "grain_line"});
+  f.reject_unknown({"seam_allowance", "hem_allowance", "edges", "corner_style", "notches", "labels"});
   if (auto v = f.length_mm("seam_allowance", false, 0, 100)) s.seam_allowance_mm = *v;
   if (auto v = f.length_mm("hem_allowance", false, 0, 200)) s.hem_allowance_mm = *v;
   if (auto v = f.choice("corner_style", false, {"mitre", "square", "mirror"})) s.corner_style = *v;
   if (auto v = f.boolean("notches", false)) s.notches = *v;
   if (auto v = f.choice("labels", false, {"inside", "separate", "none"})) s.labels = *v;
-  if (auto v = f.boolean("grain_line", false)) s.grain_line = *v;
   for (auto& e : f.objects("edges", false)) {
     e.reject_unknown({"piece", "edge", "allowance"});
     auto piece = e.string("piece", true);

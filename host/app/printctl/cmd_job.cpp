@@ -7,7 +7,10 @@
 #include "host/app/printctl/commands.h"
 #include "host/job/manifest.h"
 #include "host/job/package.h"
+#include "device/model/printer_model_file.h"
+#include "host/pipeline/printer_model.h"
 #include "host/pipeline/run_job.h"
+#include "host/session/sim_reexec.h"
 
 namespace tp::host::cli {
 
@@ -52,8 +55,30 @@ void register_job_commands(CLI::App& app) {
   run->add_option("--resume-after-swath", resume_after, "Swaths up to this index were already printed");
   run->callback([] {
     fs::path out = fs::absolute(run_out);
-    auto job = open_job(run_path, out / "package");
+    // A zip job is unpacked inside the output folder, afresh on every run.
+    std::error_code ec;
+    fs::remove_all(out / ".package", ec);
+    auto job = open_job(run_path, out / ".package");
     if (!job) die(job.error(), 1);
+    // The simulated printer is printsim: run this very command again under it, so the job goes
+    // through the real USB and GPIO drivers to the emulated devices.
+    const std::string printer = run_printer.empty() ? job->print.printer : run_printer;
+    if (printer == "sim" && !under_printsim()) {
+      // printsim emulates the printer the job is planned for, in the job's print mode.
+      auto model = job_printer_model(*job);
+      if (!model) die(model.error(), 1);
+      fs::create_directories(out, ec);
+      const fs::path model_file = out / "printer-model.txt";
+      if (std::FILE* f = std::fopen(model_file.c_str(), "w")) {
+        std::fputs(device::format_printer_model(*model).c_str(), f);
+        std::fclose(f);
+      }
+      SimReexec sim;
+      sim.out_dir = out;
+      sim.printer_model = model_file;
+      fs::remove_all(out / ".package", ec);
+      if (auto st = reexec_under_printsim(sim); !st) die(st.error(), 2);
+    }
     RunOptions opt;
     opt.out_dir = out;
     opt.printer_override = run_printer;

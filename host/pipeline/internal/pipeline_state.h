@@ -6,9 +6,13 @@
 #include <optional>
 #include <vector>
 
+#include "geometry/allowance/finishing.h"
+#include "geometry/body/body_sdf.h"
+#include "geometry/body/measurements.h"
 #include "geometry/design/design.h"
 #include "geometry/design/piece_renderer.h"
 #include "geometry/garment/garment.h"
+#include "geometry/mesh/mesh_pattern.h"
 #include "geometry/nesting/marker.h"
 #include "geometry/pattern/pattern.h"
 #include "host/job/job.h"
@@ -17,17 +21,26 @@
 namespace tp::host::internal {
 
 struct PipelineState {
+  PipelineState(const Job& j, const RunOptions& o, const geometry::CancelToken& c, nlohmann::json& r)
+      : job(j), options(o), cancel(c), report(r) {}
+
   const Job& job;
   const RunOptions& options;
   const geometry::CancelToken& cancel;
   nlohmann::json& report;
 
   geometry::Pattern pattern;
+  std::optional<geometry::BodyMeasurements> measurements;   ///< sample garments and dress forms
+  std::shared_ptr<const geometry::BodySdf> body;            ///< collision body, if the job has one
+  std::optional<geometry::PatternMesh> meshes;
   std::optional<geometry::Garment> garment;       ///< 3D (or flat) correspondence
   bool garment_is_3d = false;
   geometry::Design design;
+  geometry::Finishing finishing;
   std::unique_ptr<geometry::PieceRenderer> renderer;
-  std::vector<geometry::Marker> markers;
+  std::vector<geometry::Marker> markers;          ///< as nested, each in its own frame
+  geometry::Marker roll;                          ///< all markers one after another on the roll
+  std::vector<double> marker_start_mm;            ///< where each marker starts on the roll
 };
 
 // One function per stage (stage_<name>.cpp), each filling PipelineState and the report.

@@ -1,0 +1,101 @@
+// host/pipeline/stage_garment.cpp: the garment stage: the pieces sewn on the job's body (or laid
+// flat when it has none), the distortion figures, the 3D garment as OBJ and its previews.
+#include <fstream>
+
+#include "geometry/body/load_body_obj.h"
+#include "geometry/garment/distortion.h"
+#include "geometry/garment/flat_garment.h"
+#include "geometry/garment/garment_obj.h"
+#include "geometry/garment/sew_garment.h"
+#include "geometry/preview/render_preview.h"
+#include "geometry/samples/garments.h"
+#include "host/pipeline/internal/pipeline_state.h"
+#include "rip/image/image_io.h"
+
+namespace tp::host::internal {
+
+namespace {
+
+Error from_geometry(const geometry::Error& e) {
+  return Error{e.code == geometry::ErrorCode::kCancelled ? ErrorCode::kCancelled : ErrorCode::kPipeline, e.message};
+}
+
+// The job's body as a collision object: the dress form of its measurements or its mesh file.
+Result<std::shared_ptr<const geometry::BodySdf>> job_body(const PipelineState& ps) {
+  const GarmentSpec& g = ps.job.garment;
+  if (g.body_kind == "mesh") {
+    auto mesh = geometry::load_body_obj(g.body_mesh->string(), g.body_mesh_scale_to_mm);
+    if (!mesh) return fail(from_geometry(mesh.error()));
+    auto sdf = geometry::BodySdf::build(std::move(*mesh));
+    if (!sdf) return fail(from_geometry(sdf.error()).with_context(g.body_mesh->string()));
+    return std::make_shared<const geometry::BodySdf>(std::move(*sdf));
+  }
+  if (ps.measurements) {
+    auto sdf = geometry::samples::make_dress_form_sdf(*ps.measurements);
+    if (!sdf) return fail(from_geometry(sdf.error()).with_context("dress form"));
+    return *sdf;
+  }
+  return std::shared_ptr<const geometry::BodySdf>();
+}
+
+Status write_text(const std::filesystem::path& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+  if (!out) return fail(ErrorCode::kIo, path.string() + ": cannot write");
+  return {};
+}
+
+}  // namespace
+
+Status stage_garment(PipelineState& ps) {
+  auto body = job_body(ps);
+  if (!body) return fail(body.error());
+  ps.body = *body;
+
+  if (!ps.garment && ps.body) {
+    geometry::SewOptions opt;
+    opt.target_edge_mm = ps.job.garment.mesh_edge_mm;
+    geometry::SewStats stats;
+    auto g = geometry::sew_garment(ps.pattern, *ps.meshes, *ps.body, opt, &stats, &ps.cancel);
+    if (!g) return fail(from_geometry(g.error()));
+    ps.garment = std::move(*g);
+    ps.garment_is_3d = true;
+    ps.report["sewing"] = {{"sewing_iterations", stats.sewing_iterations},
+                           {"relax_iterations", stats.relax_iterations},
+                           {"contacts", stats.contacts},
+                           {"seconds", stats.seconds}};
+  } else if (!ps.garment) {
+    auto g = geometry::flat_garment(ps.pattern, *ps.meshes);
+    if (!g) return fail(from_geometry(g.error()));
+    ps.garment = std::move(*g);
+    ps.garment_is_3d = false;
+  }
+
+  geometry::DistortionReport d = geometry::measure_distortion(ps.pattern, *ps.garment, ps.body.get());
+  ps.report["garment"] = {{"mode", ps.garment_is_3d ? "3d" : "flat"},
+                          {"vertices", d.vertices},
+                          {"triangles", d.triangles},
+                          {"strain_mean", d.strain_mean},
+                          {"strain_p95", d.strain_p95},
+                          {"strain_max", d.strain_max},
+                          {"area_change", d.area_change},
+                          {"seam_len_diff_max", d.seam_len_diff_max},
+                          {"inside_body", d.inside_body},
+                          {"min_clearance_mm", ps.body ? d.min_clearance_mm : 0.0}};
+  if (!ps.garment_is_3d) return {};
+
+  // The 3D garment with its per-piece texture coordinates, and the previews for the report.
+  const auto& out = ps.options.out_dir;
+  if (auto st = write_text(out / "garment.obj", geometry::garment_to_obj(ps.pattern, *ps.garment)); !st) return st;
+  nlohmann::json previews = nlohmann::json::array();
+  for (auto view : {geometry::PreviewView::kFront, geometry::PreviewView::kSide, geometry::PreviewView::kBack}) {
+    auto img = geometry::render_preview(*ps.garment, ps.body ? &ps.body->mesh() : nullptr, view);
+    std::string name = "garment-" + geometry::to_string(view) + ".png";
+    if (auto st = rip::write_png(out / name, img); !st) return fail(ErrorCode::kIo, st.error().message);
+    previews.push_back(name);
+  }
+  ps.report["garment"]["files"] = {{"obj", "garment.obj"}, {"previews", previews}};
+  return {};
+}
+
+}  // namespace tp::host::internal

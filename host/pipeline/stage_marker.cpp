@@ -1,0 +1,85 @@
+// host/pipeline/stage_marker.cpp: the marker stage: cut outlines nested on the roll under the
+// job's grain, mirror, gap and defect rules; markers laid end to end; marker.png.
+#include "geometry/nesting/nest_pieces.h"
+#include "host/pipeline/internal/pipeline_state.h"
+#include "rip/image/image_io.h"
+#include "rip/render/marker_preview.h"
+
+namespace tp::host::internal {
+
+namespace {
+
+geometry::PieceRotation rotation_rule(const std::string& r) {
+  if (r == "90") return geometry::PieceRotation::kQuarterTurns;
+  if (r == "free") return geometry::PieceRotation::kFree;
+  if (r == "fixed") return geometry::PieceRotation::kOneWay;
+  return geometry::PieceRotation::kGrainBothWays;
+}
+
+}  // namespace
+
+Status stage_marker(PipelineState& ps) {
+  const MarkerSpec& m = ps.job.marker;
+  std::vector<geometry::NestItem> items;
+  double piece_area_mm2 = 0;
+  for (int i = 0; i < ps.renderer->piece_count(); ++i) {
+    const geometry::Piece& piece = ps.pattern.pieces[static_cast<size_t>(i)];
+    geometry::NestItem item;
+    item.piece = i;
+    item.name = piece.name;
+    item.outline_mm = ps.renderer->cut_outline_mm(i);
+    item.rotation = rotation_rule(m.rotations);
+    item.mirror = m.mirror ? geometry::PieceMirror::kAllowed : geometry::PieceMirror::kNever;
+    if (piece.grain && geometry::norm(piece.grain->to_mm - piece.grain->from_mm) > 0)
+      item.grain = piece.grain->to_mm - piece.grain->from_mm;
+    piece_area_mm2 += std::abs(geometry::signed_area(item.outline_mm));
+    items.push_back(std::move(item));
+  }
+  geometry::NestOptions opt;
+  opt.fabric_width_mm = m.fabric_width_mm;
+  opt.gap_mm = m.gap_mm;
+  opt.selvedge_margin_mm = m.edge_margin_mm;
+  opt.end_margin_mm = m.gap_mm;
+  for (const auto& d : m.defects)
+    opt.defects_mm.push_back({{d.x_mm, d.y_mm}, {d.x_mm + d.width_mm, d.y_mm},
+                              {d.x_mm + d.width_mm, d.y_mm + d.length_mm}, {d.x_mm, d.y_mm + d.length_mm}});
+  opt.max_length_mm = m.max_length_mm.value_or(0);
+  opt.time_limit_s = m.time_limit_s;
+  opt.seed = static_cast<std::uint64_t>(m.seed);
+  auto markers = geometry::nest_pieces(items, opt, ps.cancel);
+  if (!markers) {
+    auto code = markers.error().code == geometry::ErrorCode::kCancelled ? ErrorCode::kCancelled : ErrorCode::kPipeline;
+    return fail(code, markers.error().message);
+  }
+  ps.markers = std::move(*markers);
+
+  // One roll: each marker starts where the previous one ends.
+  ps.roll = {};
+  ps.roll.width_mm = m.fabric_width_mm;
+  ps.marker_start_mm.clear();
+  nlohmann::json list = nlohmann::json::array();
+  for (const auto& mk : ps.markers) {
+    ps.marker_start_mm.push_back(ps.roll.length_mm);
+    for (auto p : mk.placements) {
+      p.offset_mm.y += ps.roll.length_mm;
+      ps.roll.placements.push_back(p);
+    }
+    list.push_back({{"start_mm", ps.roll.length_mm}, {"length_mm", mk.length_mm},
+                    {"pieces", mk.placements.size()}, {"utilisation", mk.utilisation}});
+    ps.roll.length_mm += mk.length_mm;
+  }
+  ps.roll.utilisation = ps.roll.length_mm > 0 ? piece_area_mm2 / (ps.roll.width_mm * ps.roll.length_mm) : 0;
+  ps.report["marker"] = {{"fabric_width_mm", ps.roll.width_mm},
+                         {"length_mm", ps.roll.length_mm},
+                         {"utilisation", ps.roll.utilisation},
+                         {"markers", list}};
+  ps.report["fabric_length_mm"] = ps.roll.length_mm;
+
+  auto preview = rip::render_marker_preview(ps.roll, *ps.renderer, ps.job.print.preview_dpi);
+  if (!preview) return fail(ErrorCode::kPipeline, "marker.png: " + preview.error().message);
+  if (auto st = rip::write_png(ps.options.out_dir / "marker.png", *preview, rip::PngChannels::kRgbOverWhite); !st)
+    return fail(ErrorCode::kIo, st.error().message);
+  return {};
+}
+
+}  // namespace tp::host::internal

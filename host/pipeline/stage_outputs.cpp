@@ -1,0 +1,67 @@
+// host/pipeline/stage_outputs.cpp: the outputs stage: each piece as a PNG, seam and allowance
+// continuity measured on the rendered contone raster, and the cut files.
+#include <cctype>
+#include <filesystem>
+
+#include "geometry/continuity/continuity.h"
+#include "geometry/cutfile/cut_job.h"
+#include "geometry/cutfile/dxf_aama_writer.h"
+#include "geometry/cutfile/svg_writer.h"
+#include "geometry/design/render_piece_image.h"
+#include "host/pipeline/internal/pipeline_state.h"
+#include "rip/image/image_io.h"
+
+namespace tp::host::internal {
+
+namespace {
+
+// Piece names become file names: keep letters, digits, '-', '_' and '.'.
+std::string file_stem(const std::string& name) {
+  std::string out;
+  for (char c : name) out += (std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' || c == '.') ? c : '_';
+  return out.empty() ? "piece" : out;
+}
+
+nlohmann::json stats_json(const geometry::DeltaEStats& s) {
+  return {{"samples", s.samples}, {"de00_mean", s.mean}, {"de00_p95", s.p95}, {"de00_max", s.max}};
+}
+
+}  // namespace
+
+/// Resolution at which seam continuity is measured for the report.
+constexpr double kContinuityDpi = 150;
+
+Status stage_outputs(PipelineState& ps) {
+  const auto& out = ps.options.out_dir;
+  std::error_code ec;
+  std::filesystem::create_directories(out / "pieces", ec);
+  nlohmann::json pieces = nlohmann::json::array();
+  for (int i = 0; i < ps.renderer->piece_count(); ++i) {
+    if (ps.cancel.cancelled()) return fail(ErrorCode::kCancelled, "job cancelled");
+    auto img = geometry::render_piece_image(*ps.renderer, i, ps.job.print.preview_dpi);
+    std::string name = "pieces/" + file_stem(ps.pattern.pieces[static_cast<size_t>(i)].name) + ".png";
+    if (auto st = rip::write_png(out / name, img.image); !st) return fail(ErrorCode::kIo, st.error().message);
+    pieces.push_back(name);
+  }
+  ps.report["files"] = {{"marker", "marker.png"}, {"pieces", pieces}};
+
+  // Cut contours exactly where the pieces were printed on the roll.
+  auto cut = geometry::make_cut_job(ps.pattern, ps.finishing, ps.roll);
+  if (!cut) return fail(ErrorCode::kPipeline, "cut files: " + cut.error().message);
+  if (auto st = geometry::write_dxf_aama(*cut, out / "cut.dxf"); !st) return fail(ErrorCode::kIo, st.error().message);
+  if (auto st = geometry::write_svg(*cut, out / "cut.svg"); !st) return fail(ErrorCode::kIo, st.error().message);
+  ps.report["files"]["cut"] = {"cut.dxf", "cut.svg"};
+
+  if (!ps.pattern.stitches.empty()) {
+    auto c = geometry::measure_continuity(ps.pattern, *ps.garment, ps.finishing, *ps.renderer, kContinuityDpi);
+    if (!c) return fail(ErrorCode::kPipeline, "continuity: " + c.error().message);
+    ps.report["seams"] = stats_json(c->seams);
+    ps.report["seams"]["dpi"] = kContinuityDpi;
+    ps.report["seams"]["count"] = c->seam_list.size();
+    ps.report["allowance"] = stats_json(c->allowance);
+    ps.report["allowance"]["count"] = c->allowance_list.size();
+  }
+  return {};
+}
+
+}  // namespace tp::host::internal

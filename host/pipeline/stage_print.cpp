@@ -1,0 +1,181 @@
+// host/pipeline/stage_print.cpp: the print stage: the roll RIPped band by band and each swath
+// streamed to the printer as soon as it is complete, with cutter cues at marker ends and notch
+// marks at notch positions; every acknowledged swath becomes the job's resume checkpoint.
+#include <algorithm>
+
+#include "host/pipeline/printer_model.h"
+#include "host/pipeline/internal/pipeline_state.h"
+#include "host/session/print_session.h"
+#include "host/session/sim_reexec.h"
+#include "rip/job/rip_job.h"
+
+namespace tp::host::internal {
+
+namespace {
+
+rip::RipSettings rip_settings(const PipelineState& ps) {
+  const PrintSpec& p = ps.job.print;
+  rip::RipSettings s;
+  s.passes = p.passes;
+  s.bidirectional = p.bidirectional;
+  s.screen = p.screen == "error-diffusion" ? rip::ScreenKind::kErrorDiffusion : rip::ScreenKind::kBlueNoise;
+  s.drop_levels = p.levels == 2 ? 2 : 0;
+  if (p.icc_profile) s.profile_path = *p.icc_profile;
+  s.ink_limit_percent = p.ink_limit_pct;
+  s.first_swath_index = static_cast<std::uint32_t>(std::max<std::int64_t>(0, ps.options.resume_after_swath + 1));
+  if (p.separations_tiff) s.separations.screened_tiff = ps.options.out_dir / "separations.tif";
+  return s;
+}
+
+// A point at arc length `s_mm` along an edge polyline.
+geometry::Vec2 point_on_edge(const geometry::Edge& e, double s_mm) {
+  for (size_t i = 1; i < e.points_mm.size(); ++i) {
+    double len = geometry::norm(e.points_mm[i] - e.points_mm[i - 1]);
+    if (s_mm <= len || i + 1 == e.points_mm.size()) {
+      double t = len > 0 ? std::clamp(s_mm / len, 0.0, 1.0) : 0;
+      return e.points_mm[i - 1] + (e.points_mm[i] - e.points_mm[i - 1]) * t;
+    }
+    s_mm -= len;
+  }
+  return e.points_mm.front();
+}
+
+struct Cue {
+  device::CueKind kind;
+  std::int64_t y_um;
+  std::int32_t x_um;
+};
+
+// Cut cues at the end of each marker, notch marks where each placed piece has a notch.
+std::vector<Cue> roll_cues(const PipelineState& ps) {
+  std::vector<Cue> cues;
+  for (const auto& pl : ps.roll.placements) {
+    const geometry::Piece& piece = ps.pattern.pieces[static_cast<size_t>(pl.piece)];
+    const geometry::Affine2 to_roll = pl.piece_to_roll();
+    for (const auto& n : piece.notches) {
+      if (n.edge < 0 || n.edge >= static_cast<int>(piece.edges.size())) continue;
+      geometry::Vec2 p = to_roll.apply(point_on_edge(piece.edges[static_cast<size_t>(n.edge)], n.position_mm));
+      cues.push_back({device::CueKind::kNotch, std::llround(p.y * 1000), static_cast<std::int32_t>(std::lround(p.x * 1000))});
+    }
+  }
+  for (size_t k = 0; k < ps.markers.size(); ++k)
+    cues.push_back({device::CueKind::kCut, std::llround((ps.marker_start_mm[k] + ps.markers[k].length_mm) * 1000), 0});
+  std::sort(cues.begin(), cues.end(), [](const Cue& a, const Cue& b) { return a.y_um < b.y_um; });
+  return cues;
+}
+
+// The connected printer must be the one the swaths are planned for.
+Status check_printer(const device::PrinterModel& model, const device::IdentifyMsg& id) {
+  auto mismatch = [&](const std::string& what, const std::string& printer, const std::string& job) {
+    return fail(ErrorCode::kPrinter, "printer '" + id.model + "' " + what + " " + printer + ", the job plans for " + job +
+                                         " (choose the printer model with print.printer_model)");
+  };
+  if (id.dpi_x != model.dpi_x || id.dpi_y != model.dpi_y)
+    return mismatch("prints at", std::to_string(id.dpi_x) + "x" + std::to_string(id.dpi_y) + " dpi",
+                    std::to_string(model.dpi_x) + "x" + std::to_string(model.dpi_y) + " dpi");
+  if (id.nozzles_per_ink != model.nozzles_per_ink)
+    return mismatch("has", std::to_string(id.nozzles_per_ink) + " nozzles per ink", std::to_string(model.nozzles_per_ink));
+  if (id.bits_per_pixel != model.bits_per_pixel)
+    return mismatch("takes", std::to_string(id.bits_per_pixel) + " bits per pixel", std::to_string(model.bits_per_pixel));
+  if (id.inks.size() != model.inks.size())
+    return mismatch("has", std::to_string(id.inks.size()) + " inks", std::to_string(model.inks.size()));
+  for (size_t i = 0; i < id.inks.size(); ++i)
+    if (id.inks[i] != model.inks[i].name) return mismatch("has ink", id.inks[i], model.inks[i].name);
+  return {};
+}
+
+nlohmann::json rip_json(const rip::RipStats& st) {
+  nlohmann::json drops = nlohmann::json::array();
+  for (const auto& d : st.drops) drops.push_back(d[1] + d[2] + d[3]);
+  return {{"width_px", st.width_px},          {"height_px", st.height_px},
+          {"area_m2", st.area_m2},            {"swaths", st.swaths},
+          {"swaths_sent", st.swaths_sent},    {"compression_ratio", st.compression_ratio},
+          {"drops_per_ink", drops},           {"threads", st.threads},
+          {"seconds", st.wall_s}};
+}
+
+}  // namespace
+
+Status stage_print(PipelineState& ps) {
+  const std::string printer = ps.options.printer_override.empty() ? ps.job.print.printer : ps.options.printer_override;
+  auto model = job_printer_model(ps.job);
+  if (!model) return fail(model.error());
+  rip::RipSettings settings = rip_settings(ps);
+
+  // Without a printer ("none") the RIP still runs in full; its swaths are counted and dropped.
+  std::unique_ptr<PrintSession> session;
+  std::uint32_t acked = 0;
+  if (printer != "none") {
+    if (printer == "sim" && !under_printsim())
+      return fail(ErrorCode::kPrinter,
+                  "printer 'sim' is the simulated printer: run the job with `printctl run` (which starts printsim) "
+                  "or under `printsim run -- ...`");
+    PrinterConfig cfg;
+    cfg.printer = printer;
+    auto s = PrintSession::open(cfg);
+    if (!s) return fail(s.error());
+    session = std::move(*s);
+    if (auto st = check_printer(*model, session->printer()); !st) return st;
+    session->on_swath_acked([&](std::uint32_t index) {
+      acked = std::max(acked, index + 1);
+      if (ps.options.on_checkpoint) ps.options.on_checkpoint(index);
+    });
+    JobStart start;
+    start.job_id = static_cast<std::uint64_t>(ps.options.job_id);
+    start.name = ps.job.name;
+    start.first_swath = settings.first_swath_index;
+    start.fabric_width_px = static_cast<std::uint32_t>(std::lround(ps.roll.width_mm / 25.4 * model->dpi_x));
+    if (auto st = session->begin_job(start); !st) return st;
+    for (const Cue& c : roll_cues(ps))
+      if (auto st = session->queue_cue(c.kind, c.y_um, c.x_um); !st) return st;
+  }
+
+  // Swaths go to the printer as the RIP completes them; feed is tracked for the final feed-out.
+  std::int64_t fed_um = 0;
+  auto sink = [&](device::Swath&& swath) -> rip::Status {
+    fed_um += swath.header.feed_before_um;
+    if (!session) return {};
+    if (auto st = session->send_swath(swath, ps.cancel); !st)
+      return rip::fail(st.error().code == ErrorCode::kCancelled ? rip::ErrorCode::kCancelled : rip::ErrorCode::kSwath,
+                       st.error().message);
+    return {};
+  };
+  auto stats = rip::rip_marker(ps.roll, *ps.renderer, *model, settings, sink, {}, ps.cancel);
+  if (!stats) {
+    if (session) (void)session->abort_job(stats.error().message);
+    bool cancelled = stats.error().code == rip::ErrorCode::kCancelled || ps.cancel.cancelled();
+    return fail(cancelled ? ErrorCode::kCancelled : ErrorCode::kPipeline, stats.error().message);
+  }
+  ps.report["rip"] = rip_json(*stats);
+
+  nlohmann::json print = {{"printer", printer}, {"swaths_total", stats->swaths}, {"swaths_sent", stats->swaths_sent},
+                          {"swaths_acked", session ? acked : 0u}};
+  if (session) {
+    // Feed the end of the roll past the cutter so the last cut cue fires.
+    const std::int64_t end_um = std::llround(ps.roll.length_mm * 1000);
+    auto result = session->end_job(static_cast<std::uint32_t>(std::max<std::int64_t>(0, end_um - fed_um)), ps.cancel);
+    if (!result) return fail(result.error());
+    const SessionStats& ss = result->stats;
+    print["swaths_sent"] = ss.swaths_sent;
+    print["swaths_acked"] = ss.swaths_acked;
+    print["swaths_skipped_resume"] = ss.swaths_skipped;
+    print["reconnects"] = ss.reconnects;
+    print["printer_swaths_printed"] = result->report.swaths_printed;
+    print["feed_travel_um"] = result->report.feed_travel_um;
+    print["print_time_s"] = static_cast<double>(result->report.print_time_us) / 1e6;
+    print["cues_fired"] = result->report.cues_fired;
+    print["drops_per_ink"] = result->report.drops_per_ink;
+    print["outcome"] = std::string(device::to_string(result->report.outcome));
+    nlohmann::json cues = nlohmann::json::array();
+    for (const auto& c : result->cues)
+      cues.push_back({{"kind", std::string(device::to_string(c.kind))}, {"position_um", c.position_um},
+                      {"fired", c.fired}, {"fired_at_um", c.fired_at_um}});
+    print["cues"] = cues;
+  }
+  ps.report["print"] = print;
+  ps.report["swaths_sent"] = print["swaths_sent"];
+  ps.report["swaths_acked"] = print["swaths_acked"];
+  return {};
+}
+
+}  // namespace tp::host::internal
