@@ -102,6 +102,8 @@ class PrinterController {
   /// Swaths whose first row lay outside the head's reach as the feeds placed it (the spread of
   /// first_row minus head row exceeded the nozzle span): feeds and rows disagree.
   [[nodiscard]] std::uint32_t row_mismatches() const { return row_mismatches_; }
+  /// The counters of the open job so far (outcome kNone), as a job report.
+  [[nodiscard]] JobReportMsg current_report() const { return report(); }
   /// Range of (swath first_row - head row from the feeds) over the job, in rows.
   [[nodiscard]] std::int64_t head_offset_min() const { return head_offset_min_; }
   [[nodiscard]] std::int64_t head_offset_max() const { return head_offset_max_; }

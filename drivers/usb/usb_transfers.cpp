@@ -61,10 +61,10 @@ void in_callback(libusb_transfer* t) {
         impl->rx.insert(impl->rx.end(), t->buffer, t->buffer + t->actual_length);
         ++impl->stats.in_transfers;
         impl->stats.in_bytes += static_cast<std::uint64_t>(t->actual_length);
-        resubmit = !impl->disconnected;
+        resubmit = !impl->disconnected && !impl->closing;
         break;
       case LIBUSB_TRANSFER_TIMED_OUT:
-        resubmit = !impl->disconnected;
+        resubmit = !impl->disconnected && !impl->closing;
         break;
       case LIBUSB_TRANSFER_STALL: impl->in_stalled = true; break;
       case LIBUSB_TRANSFER_CANCELLED: break;
@@ -82,6 +82,7 @@ void UsbTransport::Impl::submit_in(InSlot& slot) {
                             &slot, 0);
   {
     std::lock_guard lock(m);
+    if (closing) return;
     slot.busy = true;
   }
   if (int r = libusb_submit_transfer(slot.xfer); r != 0) {

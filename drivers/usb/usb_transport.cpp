@@ -21,6 +21,9 @@ constexpr std::uint8_t kGetDeviceId = 0;
 constexpr std::uint8_t kGetPortStatus = 1;
 constexpr std::uint8_t kSoftReset = 2;
 constexpr unsigned kControlTimeoutMs = 2000;
+// bmRequestType of class requests to the interface (USB 2.0 9.3.1).
+constexpr std::uint8_t kClassInterfaceIn = 0xA1;
+constexpr std::uint8_t kClassInterfaceOut = 0x21;
 
 std::shared_ptr<spdlog::logger> log() { return drivers_log(); }
 
@@ -60,7 +63,7 @@ bool find_printer_interface(libusb_device* dev, Candidate& c) {
 std::string read_device_id(libusb_device_handle* h, const Candidate& c) {
   unsigned char buf[1024];
   const int n = libusb_control_transfer(
-      h, LIBUSB_ENDPOINT_IN | LIBUSB_REQUEST_TYPE_CLASS | LIBUSB_RECIPIENT_INTERFACE, kGetDeviceId, c.config_index,
+      h, kClassInterfaceIn, kGetDeviceId, c.config_index,
       static_cast<std::uint16_t>((c.iface << 8) | c.alt), buf, sizeof buf - 1, kControlTimeoutMs);
   if (n < 2) return {};
   // Two-byte big-endian length (including itself), then the ID text.
@@ -141,7 +144,7 @@ Status UsbTransport::Impl::find_and_open() {
 }
 
 void UsbTransport::Impl::start() {
-  disconnected = out_stalled = in_stalled = false;
+  disconnected = out_stalled = in_stalled = closing = false;
   rx.clear();
   out.clear();
   in.clear();
@@ -171,12 +174,19 @@ void UsbTransport::Impl::start() {
 void UsbTransport::Impl::teardown() {
   if (!ctx) return;
   if (handle) {
-    // Cancel what is in flight and let the event thread collect the cancellations.
+    // Cancel what is in flight (outside our lock: completions take it) and let the event
+    // thread collect the cancellations.
+    std::vector<libusb_transfer*> live;
+    {
+      std::lock_guard guard(m);
+      closing = true;
+      for (auto& s : out)
+        if (s.state == OutSlot::State::kInFlight) live.push_back(s.xfer);
+      for (auto& s : in)
+        if (s.busy) live.push_back(s.xfer);
+    }
+    for (libusb_transfer* t : live) libusb_cancel_transfer(t);
     std::unique_lock lock(m);
-    for (auto& s : out)
-      if (s.state == OutSlot::State::kInFlight) libusb_cancel_transfer(s.xfer);
-    for (auto& s : in)
-      if (s.busy) libusb_cancel_transfer(s.xfer);
     const bool idle = cv.wait_for(lock, milliseconds(2000), [&] {
       for (auto& s : out)
         if (s.state == OutSlot::State::kInFlight) return false;
@@ -242,9 +252,7 @@ device::Status UsbTransport::drain(milliseconds timeout) { return impl_->drain(t
 device::Status UsbTransport::reset() {
   if (!impl_->handle) return device::fail(device::ErrorCode::kDisconnected, "usb: not connected");
   if (auto s = impl_->drain(milliseconds(3000)); !s) return s;
-  const int r = libusb_control_transfer(impl_->handle,
-                                        LIBUSB_ENDPOINT_OUT | LIBUSB_REQUEST_TYPE_CLASS | LIBUSB_RECIPIENT_INTERFACE,
-                                        kSoftReset, 0, static_cast<std::uint16_t>(impl_->iface << 8), nullptr, 0,
+  const int r = libusb_control_transfer(impl_->handle, kClassInterfaceOut, kSoftReset, 0, static_cast<std::uint16_t>(impl_->iface << 8), nullptr, 0,
                                         kControlTimeoutMs);
   if (r == LIBUSB_ERROR_NO_DEVICE) return device::fail(device::ErrorCode::kDisconnected, impl_->desc + ": unplugged");
   if (r < 0) return device::fail(device::ErrorCode::kTransport, impl_->desc + ": SOFT_RESET: " + usb_error_text(r));
@@ -281,9 +289,7 @@ std::string UsbTransport::device_id() const { return impl_->dev_id; }
 
 Result<std::uint8_t> UsbTransport::port_status() {
   unsigned char b = 0;
-  const int r = libusb_control_transfer(impl_->handle,
-                                        LIBUSB_ENDPOINT_IN | LIBUSB_REQUEST_TYPE_CLASS | LIBUSB_RECIPIENT_INTERFACE,
-                                        kGetPortStatus, 0, static_cast<std::uint16_t>(impl_->iface), &b, 1,
+  const int r = libusb_control_transfer(impl_->handle, kClassInterfaceIn, kGetPortStatus, 0, static_cast<std::uint16_t>(impl_->iface), &b, 1,
                                         kControlTimeoutMs);
   if (r != 1) return fail(ErrorCode::kIo, impl_->desc + ": GET_PORT_STATUS: " + usb_error_text(r < 0 ? r : LIBUSB_ERROR_IO));
   return b;

@@ -166,16 +166,12 @@ Status PrintSession::queue_cue(device::CueKind kind, std::int64_t position_um, s
 }
 
 Status PrintSession::transmit(const device::Swath& swath) {
-  for (int attempt = 0; attempt < 4; ++attempt) {
-    auto s = link_->send_swath(swath);
-    if (s) return {};
-    if (s.error().code != device::ErrorCode::kDisconnected)
-      return fail_job(ErrorCode::kPrinter, "sending swath " + std::to_string(swath.header.index) + ": " + s.error().message);
-    if (auto r = recover(s.error()); !r) return r;
-    // The recovery may have found the swath already on the printer.
-    if (swath.header.index < acked_next_) return {};
-  }
-  return fail_job(ErrorCode::kPrinter, "swath " + std::to_string(swath.header.index) + ": the link kept failing");
+  auto s = link_->send_swath(swath);
+  if (s) return {};
+  if (s.error().code != device::ErrorCode::kDisconnected)
+    return fail_job(ErrorCode::kPrinter, "sending swath " + std::to_string(swath.header.index) + ": " + s.error().message);
+  // The swath is already among the unacknowledged ones: the recovery resends it with them.
+  return recover(s.error());
 }
 
 Status PrintSession::send_swath(const device::Swath& swath, const geometry::CancelToken& cancel) {

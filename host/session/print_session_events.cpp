@@ -55,6 +55,11 @@ Status PrintSession::absorb_status() {
   if (!st || link_->status_serial() == seen_status_) return {};
   seen_status_ = link_->status_serial();
   const device::StatusMsg s = *st;
+  if (paused_since_ && s.state != device::PrinterState::kPaused) {
+    stats_.pause_s += std::chrono::duration<double>(Clock::now() - *paused_since_).count();
+    paused_since_.reset();
+    session_log()->info("printer resumed");
+  }
   if (!active_ || s.job_id != job_.job_id) return {};
   // Checkpoints: every swath the printer has committed, in order.
   while (acked_next_ < s.swath_next) {
@@ -76,10 +81,6 @@ Status PrintSession::absorb_status() {
       return fail_job(ErrorCode::kPrinter, "printer paused longer than " + std::to_string(config_.max_pause.count()) +
                                                " ms: " + std::string(device::describe(s.condition)));
     }
-  } else if (paused_since_) {
-    stats_.pause_s += std::chrono::duration<double>(Clock::now() - *paused_since_).count();
-    paused_since_.reset();
-    session_log()->info("printer resumed");
   }
   if (s.cue_waiting != 0) return fire_cue(s.cue_waiting, nullptr);
   return {};

@@ -85,9 +85,10 @@ std::vector<SyntheticCue> synthetic_cues(const SyntheticJob& job, const device::
   for (std::uint32_t k = job.cue_every; k <= job.swaths; k += job.cue_every) {
     const std::uint32_t half = k - job.cue_every / 2;
     if (job.cue_every >= 2) cues.push_back({device::CueKind::kNotch, synthetic_position_um(job, p, half), x_um});
-    // Cuts sit 5 mm before a swath boundary: the printer reaches them with the next feed, so
-    // where they fire shows the one-feed-step tolerance honestly.
-    cues.push_back({device::CueKind::kCut, synthetic_position_um(job, p, k) - 5000, 0});
+    // Cuts sit a third of a feed before a swath boundary: the printer reaches them with the
+    // next feed, so where they fire shows the one-feed-step tolerance honestly.
+    const std::int64_t end = synthetic_position_um(job, p, k);
+    cues.push_back({device::CueKind::kCut, end - (end - synthetic_position_um(job, p, k - 1)) / 3, 0});
   }
   return cues;
 }

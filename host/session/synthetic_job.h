@@ -36,7 +36,8 @@ struct SyntheticCue {
   std::int32_t x_um;
 };
 
-/// The job's cues: a cut 5 mm before the end of every `cue_every` swaths, a notch mark halfway.
+/// The job's cues: a cut a third of a feed before the end of every `cue_every` swaths, a notch
+/// mark halfway.
 std::vector<SyntheticCue> synthetic_cues(const SyntheticJob& job, const device::IdentifyMsg& printer);
 
 }  // namespace tp::host

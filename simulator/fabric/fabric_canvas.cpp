@@ -128,7 +128,10 @@ Result<FabricSummary> FabricCanvas::finish(const std::filesystem::path& tif, con
   tspec.attribute("XResolution", static_cast<float>(spec_.dpi_x));
   tspec.attribute("YResolution", static_cast<float>(spec_.dpi_y));
   tspec.attribute("ResolutionUnit", "in");
-  tspec.attribute("ImageDescription", "tp printsim fabric: summed drop levels per ink");
+  // TIFF keeps no channel names: say which ink each channel is in the description.
+  std::string inks;
+  for (const auto& ink : spec_.inks) inks += (inks.empty() ? "" : ",") + ink;
+  tspec.attribute("ImageDescription", "tp printsim fabric; channels: " + inks + "; samples: summed drop levels");
   auto tout = OIIO::ImageOutput::create(tif.string());
   if (!tout || !tout->open(tif.string(), tspec))
     return fail(ErrorCode::kOutput, tif.string() + ": cannot write TIFF: " + (tout ? tout->geterror() : OIIO::geterror()));

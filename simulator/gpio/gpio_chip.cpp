@@ -141,6 +141,13 @@ void GpioChip::handle(UMockdevIoctlClient* client) {
   if (request == GPIO_GET_LINEINFO_IOCTL) return line_info(client);
   if (request == GPIO_GET_LINEHANDLE_IOCTL) return request_handle(client);
   if (request == TP_GPIO_BIND_HANDLE_IOCTL) return bind(client);
+  if (request == TP_GPIO_RELEASE_HANDLE_IOCTL) {
+    if (auto b = bound_.find(client); b != bound_.end()) {
+      release(b->second);
+      bound_.erase(b);
+    }
+    return umockdev_ioctl_client_complete(client, 0, 0);
+  }
   if (request == GPIOHANDLE_GET_LINE_VALUES_IOCTL) return values(client, false);
   if (request == GPIOHANDLE_SET_LINE_VALUES_IOCTL) return values(client, true);
   // Line events, config changes and the v2 uAPI are not emulated.

@@ -17,6 +17,9 @@
 #define TP_GPIO_HANDLE_MAX 0x10000
 /* Private request in the GPIO ioctl space (0xB4) at a number the kernel does not use. */
 #define TP_GPIO_BIND_HANDLE_IOCTL _IOW(0xB4, 0xF0, __u32)
+/* Sent by the shim just before the client closes a handle fd, so the lines are free when close()
+ * returns, as with the kernel (umockdev reports the closed connection only later). */
+#define TP_GPIO_RELEASE_HANDLE_IOCTL _IO(0xB4, 0xF1)
 /* Environment variable naming the emulated chip node the shim reopens. */
 #define TP_GPIO_CHIP_ENV "TP_PRINTSIM_GPIOCHIP"
 

@@ -25,7 +25,8 @@ struct UsbCounters {
   std::uint64_t in_urbs = 0;
   std::uint64_t in_bytes = 0;
   std::uint64_t control_requests = 0;
-  std::uint64_t stalls = 0;       ///< bulk OUT URBs failed with a stall
+  std::uint64_t stalls = 0;       ///< times the bulk OUT endpoint halted
+  std::uint64_t stalled_urbs = 0; ///< bulk OUT URBs failed because it was halted
   std::uint64_t halts_cleared = 0;
   std::uint64_t soft_resets = 0;
 };

@@ -130,6 +130,7 @@ void JobRecorder::swath_printed(const device::SwathHeader& header, std::span<con
 
 void JobRecorder::gpio_edge(const std::string& line, bool level) {
   edges_.push_back(Edge{line, level, clock_s_(), controller_.fabric_pos_um()});
+  all_edges_.push_back(edges_.back());
 }
 
 void JobRecorder::firmware_event(const device::FirmwareEvent& e) {
@@ -150,12 +151,22 @@ void JobRecorder::job_finished(const device::JobReportMsg& report) {
 }
 
 void JobRecorder::close() {
-  if (active_) {
-    device::JobReportMsg r;
-    r.job_id = job_.job_id;
-    r.name = job_.name;
-    finish(r, "incomplete");
-  }
+  if (active_) finish(controller_.current_report(), "incomplete");
+  using nlohmann::json;
+  json run;
+  json edges = json::array();
+  for (const auto& e : all_edges_)
+    edges.push_back({{"line", e.line}, {"level", e.level ? 1 : 0}, {"time_s", e.time_s}, {"fabric_um", e.fabric_um}});
+  run["gpio_edges"] = edges;
+  run["usb"] = {{"out_urbs", usb_.out_urbs}, {"out_bytes", usb_.out_bytes}, {"in_urbs", usb_.in_urbs},
+                {"in_bytes", usb_.in_bytes}, {"stalls", usb_.stalls},       {"stalled_urbs", usb_.stalled_urbs},
+                {"halts_cleared", usb_.halts_cleared},
+                {"soft_resets", usb_.soft_resets}, {"control_requests", usb_.control_requests}};
+  json jobs = json::array();
+  for (const auto& d : written_) jobs.push_back(d.string());
+  run["jobs"] = jobs;
+  run["duration_s"] = clock_s_();
+  std::ofstream(options_.out_dir / "printsim.json") << run.dump(2) << "\n";
   std::unique_lock lock(writer_mu_);
   writer_cv_.wait(lock, [&] { return writer_queue_.empty(); });
 }
@@ -166,7 +177,10 @@ void JobRecorder::finish(const device::JobReportMsg& report, const std::string& 
   using nlohmann::json;
   const auto& m = controller_.model();
   json j;
-  j["printer"] = {{"model", m.name}, {"dpi_x", m.dpi_x}, {"dpi_y", m.dpi_y}, {"bits_per_pixel", m.bits_per_pixel}};
+  json inks = json::array();
+  for (const auto& ink : m.inks) inks.push_back(ink.name);
+  j["printer"] = {{"model", m.name}, {"dpi_x", m.dpi_x}, {"dpi_y", m.dpi_y}, {"bits_per_pixel", m.bits_per_pixel},
+                  {"inks", inks}};
   j["job"] = {{"id", report.job_id},
               {"name", job_.name},
               {"outcome", outcome},
@@ -195,7 +209,8 @@ void JobRecorder::finish(const device::JobReportMsg& report, const std::string& 
                {"injected_corruptions", rx.injected_corruptions()}};
   j["usb"] = {{"out_urbs", usb_.out_urbs}, {"out_bytes", usb_.out_bytes},
               {"in_urbs", usb_.in_urbs},   {"in_bytes", usb_.in_bytes},
-              {"stalls", usb_.stalls},     {"halts_cleared", usb_.halts_cleared},
+              {"stalls", usb_.stalls},     {"stalled_urbs", usb_.stalled_urbs},
+              {"halts_cleared", usb_.halts_cleared},
               {"soft_resets", usb_.soft_resets}, {"control_requests", usb_.control_requests}};
   json edges = json::array();
   for (const auto& e : edges_)
@@ -218,6 +233,7 @@ void JobRecorder::finish(const device::JobReportMsg& report, const std::string& 
       auto s = canvas->finish(dir / "fabric.tif", dir / "fabric.png");
       if (s) {
         j["fabric"] = {{"width_px", s->width_px},           {"height_px", s->height_px},
+                       {"channels", j["printer"]["inks"]},
                        {"preview_scale", s->preview_scale}, {"clipped_pixels", s->clipped_pixels},
                        {"late_rows", s->late_rows},         {"peak_window_rows", s->peak_window_rows}};
       } else {

@@ -44,8 +44,9 @@ class JobRecorder final : public device::PrintSink {
   void firmware_event(const device::FirmwareEvent& event);
   void fault_injected(const std::string& what);
   void note_unplug() { ++unplugs_; }
-  /// printsim is ending: a job still open is written out as "incomplete"; waits until every
-  /// job's files are written.
+  /// printsim is ending: a job still open is written out as "incomplete", printsim.json (every
+  /// GPIO edge of the run, USB counters, the jobs) goes to the output folder, and this waits
+  /// until every job's files are written.
   void close();
   /// Folders of the jobs written so far.
   [[nodiscard]] const std::vector<std::filesystem::path>& written() const { return written_; }
@@ -86,6 +87,7 @@ class JobRecorder final : public device::PrintSink {
     std::string text;
   };
   std::vector<Edge> edges_;
+  std::vector<Edge> all_edges_;  ///< the whole run's, for printsim.json
   std::vector<Event> events_;
   std::vector<std::string> faults_;
   std::vector<std::filesystem::path> written_;

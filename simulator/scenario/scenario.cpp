@@ -57,7 +57,7 @@ Result<Scenario> parse_scenario(std::string_view text, std::string_view source) 
     if (it.key() == "description") {
       if (!it->is_string()) return bad("/description", "expected a string");
       s.description = it->get<std::string>();
-    } else if (it.key() == "expect") {
+    } else if (it.key() == "expect" || it.key() == "job") {
       // For test runners; printsim does not look inside.
     } else if (it.key() != "faults") {
       return bad("/" + it.key(), "unknown key");
@@ -78,7 +78,8 @@ Result<Scenario> parse_scenario(std::string_view text, std::string_view source) 
       const auto& v = *it;
       if (key == "type") {
         if (!v.is_string()) return bad(ptr, "expected a string");
-        const std::string name = v.get<std::string>();
+        std::string name = v.get<std::string>();
+        if (name == "ink_out") name = "ink_low";  // what operators call it when it stops the printer
         for (FaultType t : kAllFaults)
           if (to_string(t) == name) {
             spec.type = t;

@@ -1,6 +1,6 @@
 // simulator/scenario/scenario.h: fault-injection scenarios for printsim (JSON): which fault,
 // when it strikes (swath, frame on the wire, or time), and for how long. The format is in
-// docs/simulator.md; an "expect" object is allowed and left to test runners.
+// docs/simulator.md; "expect" and "job" objects are allowed and left to test runners.
 #pragma once
 
 #include <cstdint>

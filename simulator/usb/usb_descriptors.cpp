@@ -1,6 +1,7 @@
 // simulator/usb/usb_descriptors.cpp: descriptors and sysfs description of the emulated printer.
 #include "simulator/usb/usb_descriptors.h"
 
+#include <algorithm>
 #include <cstdio>
 
 namespace tp::sim {
@@ -71,8 +72,10 @@ std::optional<std::vector<std::uint8_t>> string_descriptor(const UsbIdentity& id
 
 std::vector<std::uint8_t> device_id_reply(const UsbIdentity& id) {
   const std::size_t n = id.ieee1284_id.size() + 2;
-  std::vector<std::uint8_t> r{static_cast<std::uint8_t>(n >> 8), static_cast<std::uint8_t>(n)};
-  r.insert(r.end(), id.ieee1284_id.begin(), id.ieee1284_id.end());
+  std::vector<std::uint8_t> r(n);
+  r[0] = static_cast<std::uint8_t>(n >> 8);
+  r[1] = static_cast<std::uint8_t>(n);
+  std::copy(id.ieee1284_id.begin(), id.ieee1284_id.end(), r.begin() + 2);
   return r;
 }
 

@@ -106,8 +106,11 @@ void UsbPrinterDevice::unplug() {
     cs.pending_in.clear();
   }
   service();
-  umockdev_testbed_uevent(testbed_, syspath_.c_str(), "remove");
-  umockdev_testbed_remove_device(testbed_, syspath_.c_str());
+  // umockdev names devices by their /sys path. No uevent: umockdev builds them with libudev in
+  // the sending process, and printsim itself does not run under the preload. Hosts notice the
+  // unplug from their failed URBs and re-enumerate.
+  const std::string sys = "/sys" + syspath_;
+  umockdev_testbed_remove_device(testbed_, sys.c_str());
   controller_.link_reset();
   sim_log()->info("{}: unplugged", description());
 }
@@ -242,12 +245,15 @@ void UsbPrinterDevice::submit(UMockdevIoctlClient* client, ClientState& cs) {
 void UsbPrinterDevice::bulk_out(Urb& u) {
   if (out_halted_ || stall_next_out_) {
     // A halted endpoint takes nothing until the host clears it.
-    if (stall_next_out_) sim_log()->info("{}: bulk OUT stalled (fault injection)", description());
+    if (stall_next_out_) {
+      sim_log()->info("{}: bulk OUT stalled (fault injection)", description());
+      ++counters_.stalls;
+    }
     stall_next_out_ = false;
     out_halted_ = true;
     u.status = -EPIPE;
     u.actual = 0;
-    ++counters_.stalls;
+    ++counters_.stalled_urbs;
     return;
   }
   controller_.receive(std::span(u.buffer->data, static_cast<std::size_t>(u.length)), now_us_());

@@ -55,6 +55,7 @@ struct UsbTransport::Impl {
   std::vector<InSlot> in;
   std::deque<std::uint8_t> rx;
   bool disconnected = false;
+  bool closing = false;  ///< teardown: completions must not resubmit
   bool out_stalled = false;
   bool in_stalled = false;
   std::uint64_t next_order = 0;

@@ -2,7 +2,8 @@
  * umockdev's preload. It fills two gaps in umockdev for GPIO: it turns the emulated chip's
  * line-handle marker into a real fd (see simulator/gpio/gpio_shim_protocol.h), and it points
  * scandir("/dev") at the testbed, which umockdev does not redirect, so that libgpiod's chip
- * iteration (`gpiodetect`, `gpioinfo` without arguments) finds the emulated chip. */
+ * iteration (`gpiodetect`, `gpioinfo` without arguments) finds the emulated chip. Closing a
+ * handle fd releases its lines before close() returns, as the kernel does. */
 #define _GNU_SOURCE
 #include <dlfcn.h>
 #include <errno.h>
@@ -18,10 +19,21 @@
 #include "simulator/gpio/gpio_shim_protocol.h"
 
 typedef int (*ioctl_fn)(int, unsigned long, ...);
+typedef int (*close_fn)(int);
 
-int ioctl(int fd, unsigned long request, ...) {
+/* The line-handle fds this process holds, so close() can release their lines first. */
+#define MAX_HANDLE_FDS 256
+static int handle_fds[MAX_HANDLE_FDS];
+static int handle_count = 0;
+
+static ioctl_fn next_ioctl(void) {
   static ioctl_fn next = NULL;
   if (!next) next = (ioctl_fn)dlsym(RTLD_NEXT, "ioctl");
+  return next;
+}
+
+int ioctl(int fd, unsigned long request, ...) {
+  ioctl_fn next = next_ioctl();
   va_list ap;
   va_start(ap, request);
   void* arg = va_arg(ap, void*);
@@ -48,7 +60,22 @@ int ioctl(int fd, unsigned long request, ...) {
     return -1;
   }
   req->fd = hfd;
+  if (handle_count < MAX_HANDLE_FDS) handle_fds[handle_count++] = hfd;
   return 0;
+}
+
+int close(int fd) {
+  static close_fn next = NULL;
+  if (!next) next = (close_fn)dlsym(RTLD_NEXT, "close");
+  for (int i = 0; i < handle_count; ++i) {
+    if (handle_fds[i] != fd) continue;
+    handle_fds[i] = handle_fds[--handle_count];
+    int saved = errno;
+    next_ioctl()(fd, TP_GPIO_RELEASE_HANDLE_IOCTL, 0);
+    errno = saved;
+    break;
+  }
+  return next(fd);
 }
 
 /* scandir of /dev lists the testbed's /dev (the emulated nodes) when umockdev is active. */

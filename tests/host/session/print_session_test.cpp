@@ -1,0 +1,229 @@
+// tests/host/session/print_session_test.cpp: the print session against the real firmware in
+// process (no USB): checkpoints, resume, credits, unplug/replug, faults, pauses, cancellation.
+#include "host/session/print_session.h"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <map>
+#include <thread>
+
+#include "device/firmware/controller.h"
+#include "device/firmware/firmware_transport.h"
+#include "host/session/synthetic_run.h"
+
+namespace tp::host {
+namespace {
+
+using std::chrono::milliseconds;
+
+struct Fabric : device::PrintSink {
+  std::vector<std::uint32_t> printed;
+  void job_started(const device::JobBeginMsg&, bool) override {}
+  void swath_printed(const device::SwathHeader& h, std::span<const std::uint8_t>, std::int64_t) override {
+    printed.push_back(h.index);
+  }
+  void job_finished(const device::JobReportMsg&) override {}
+};
+
+device::PrinterModel model(int slots = 4) {
+  device::PrinterModel m;
+  m.nozzles_per_ink = 16;
+  m.swath_buffer_slots = static_cast<std::uint16_t>(slots);
+  m.swath_buffer_bytes = 1u << 20;
+  return m;
+}
+
+struct Rig {
+  Fabric fabric;
+  device::PrinterController printer;
+  device::FirmwareTransport* transport = nullptr;  // owned by the session
+  std::unique_ptr<PrintSession> session;
+  explicit Rig(device::PrinterModel m = model(), device::FirmwareOptions fo = {}) : printer(std::move(m), &fabric, fo) {}
+  void open(PrinterConfig cfg = {}) {
+    auto t = std::make_unique<device::FirmwareTransport>(printer);
+    transport = t.get();
+    cfg.use_gpio = false;
+    cfg.link.retransmit_timeout = milliseconds(100);
+    auto s = PrintSession::open_with(std::move(t), cfg);
+    ASSERT_TRUE(s) << s.error().message;
+    session = std::move(*s);
+  }
+};
+
+SyntheticRunOptions job(std::uint32_t swaths) {
+  SyntheticRunOptions o;
+  o.job.swaths = swaths;
+  o.job.width_px = 64;
+  o.job.x_start_px = 8;
+  o.job.cue_every = 3;
+  o.job_id = 77;
+  return o;
+}
+
+std::vector<std::uint32_t> range(std::uint32_t from, std::uint32_t to) {
+  std::vector<std::uint32_t> v;
+  for (std::uint32_t i = from; i < to; ++i) v.push_back(i);
+  return v;
+}
+
+TEST(PrintSession, RunsAJobWithCheckpointsInOrderAndCuesWithinAFeedStep) {
+  Rig r;
+  r.open();
+  std::vector<std::uint32_t> acked;
+  r.session->on_swath_acked([&](std::uint32_t i) { acked.push_back(i); });
+  geometry::CancelToken cancel;
+  auto res = run_synthetic_job(*r.session, job(9), cancel);
+  ASSERT_TRUE(res) << res.error().message;
+  EXPECT_EQ(acked, range(0, 9));
+  EXPECT_EQ(r.fabric.printed, range(0, 9));
+  EXPECT_EQ(res->job.report.swaths_printed, 9u);
+  EXPECT_EQ(res->job.report.overruns, 0u);
+  const std::int64_t feed_um = synthetic_position_um(job(9).job, r.session->printer(), 1);
+  ASSERT_EQ(res->job.cues.size(), 6u);
+  for (const auto& c : res->job.cues) {
+    EXPECT_TRUE(c.fired) << "cue " << c.id;
+    EXPECT_GE(c.fired_at_um, c.position_um) << "cue " << c.id;
+    EXPECT_LT(c.fired_at_um - c.position_um, feed_um) << "cue " << c.id;
+  }
+  EXPECT_EQ(res->job.report.cues_fired, 6u);
+}
+
+TEST(PrintSession, ResumesAtTheFirstUnacknowledgedSwath) {
+  Rig r;
+  r.open();
+  auto o = job(8);
+  o.first_swath = 5;
+  o.job.cue_every = 0;
+  geometry::CancelToken cancel;
+  auto res = run_synthetic_job(*r.session, o, cancel);
+  ASSERT_TRUE(res) << res.error().message;
+  EXPECT_EQ(r.fabric.printed, range(5, 8));
+  EXPECT_EQ(r.session->stats().swaths_skipped, 5u);
+}
+
+TEST(PrintSession, WaitsForCreditInsteadOfOverrunningTheBuffer) {
+  device::FirmwareOptions fo;
+  fo.speed = 20;  // passes take real (if short) time: the 2-slot buffer fills
+  Rig r(model(2), fo);
+  r.open();
+  geometry::CancelToken cancel;
+  auto o = job(6);
+  o.job.cue_every = 0;
+  auto res = run_synthetic_job(*r.session, o, cancel);
+  ASSERT_TRUE(res) << res.error().message;
+  EXPECT_EQ(res->job.report.overruns, 0u);
+  EXPECT_GT(res->job.stats.credit_wait_s, 0.0);
+  EXPECT_EQ(r.fabric.printed, range(0, 6));
+}
+
+TEST(PrintSession, SurvivesAnUnplugMidSwathWithNothingLostOrPrintedTwice) {
+  Rig r;
+  r.open();
+  std::thread replug;
+  r.printer.set_observer([&](const device::FirmwareEvent& e) {
+    if (e.kind == device::FirmwareEventKind::kSwathHeader && e.swath == 4 && !replug.joinable()) {
+      r.transport->set_connected(false);
+      replug = std::thread([&] {
+        std::this_thread::sleep_for(milliseconds(150));
+        r.transport->set_connected(true);
+      });
+    }
+  });
+  std::vector<std::uint32_t> acked;
+  r.session->on_swath_acked([&](std::uint32_t i) { acked.push_back(i); });
+  geometry::CancelToken cancel;
+  auto res = run_synthetic_job(*r.session, job(9), cancel);
+  if (replug.joinable()) replug.join();
+  ASSERT_TRUE(res) << res.error().message;
+  EXPECT_EQ(r.fabric.printed, range(0, 9));
+  EXPECT_EQ(acked, range(0, 9));
+  EXPECT_EQ(res->job.stats.reconnects, 1u);
+  EXPECT_GE(res->job.stats.recovery_ms_last, 100.0);
+  EXPECT_GE(res->job.stats.swaths_resent, 1u);
+}
+
+TEST(PrintSession, APrinterFaultEndsTheJobNamingItAndWhatWasPrinted) {
+  Rig r;
+  r.printer.set_observer([&](const device::FirmwareEvent& e) {
+    if (e.kind == device::FirmwareEventKind::kSwathPrinting && e.swath == 3)
+      r.printer.raise_fault(device::PrinterCondition::kMediaJam);
+  });
+  r.open();
+  geometry::CancelToken cancel;
+  auto res = run_synthetic_job(*r.session, job(8), cancel);
+  ASSERT_FALSE(res);
+  EXPECT_EQ(res.error().code, ErrorCode::kPrinter);
+  EXPECT_NE(res.error().message.find("media jam"), std::string::npos) << res.error().message;
+  EXPECT_NE(res.error().message.find("below 3 printed"), std::string::npos) << res.error().message;
+  EXPECT_EQ(r.fabric.printed, range(0, 3));
+  EXPECT_EQ(r.printer.state(), device::PrinterState::kIdle) << "the session aborts the failed job";
+}
+
+TEST(PrintSession, APauseIsWaitedOut) {
+  Rig r;
+  r.open();
+  std::thread clear;
+  r.printer.set_observer([&](const device::FirmwareEvent& e) {
+    if (e.kind == device::FirmwareEventKind::kSwathPrinting && e.swath == 2 && !clear.joinable()) {
+      r.printer.set_condition(device::PrinterCondition::kInkLow, true);
+      clear = std::thread([&] {
+        std::this_thread::sleep_for(milliseconds(200));
+        r.transport->with_controller(
+            [](device::PrinterController& c) { c.set_condition(device::PrinterCondition::kInkLow, false); });
+      });
+    }
+  });
+  geometry::CancelToken cancel;
+  auto o = job(6);
+  o.job.cue_every = 0;
+  auto res = run_synthetic_job(*r.session, o, cancel);
+  if (clear.joinable()) clear.join();
+  ASSERT_TRUE(res) << res.error().message;
+  EXPECT_EQ(r.fabric.printed, range(0, 6));
+  EXPECT_GT(res->job.stats.pause_s, 0.1);
+}
+
+TEST(PrintSession, CancellingAbortsTheJobOnThePrinter) {
+  Rig r;
+  r.open();
+  geometry::CancelToken cancel;
+  std::vector<std::uint32_t> acked;
+  r.session->on_swath_acked([&](std::uint32_t i) {
+    acked.push_back(i);
+    if (i == 2) cancel.cancel();
+  });
+  auto res = run_synthetic_job(*r.session, job(9), cancel);
+  ASSERT_FALSE(res);
+  EXPECT_EQ(res.error().code, ErrorCode::kCancelled);
+  EXPECT_LT(r.fabric.printed.size(), 9u);
+  auto st = r.printer.status();
+  EXPECT_EQ(st.state, device::PrinterState::kIdle);
+  EXPECT_EQ(st.last_outcome, device::JobOutcome::kAborted);
+}
+
+TEST(PrintSession, RefusesAnIncompatiblePrinter) {
+  auto m = model();
+  m.protocol_version = 7;
+  Rig r(m);
+  auto t = std::make_unique<device::FirmwareTransport>(r.printer);
+  PrinterConfig cfg;
+  cfg.use_gpio = false;
+  auto s = PrintSession::open_with(std::move(t), cfg);
+  ASSERT_FALSE(s);
+  EXPECT_EQ(s.error().code, ErrorCode::kPrinter);
+  EXPECT_NE(s.error().message.find("speaks protocol version 7; this host speaks 1"), std::string::npos)
+      << s.error().message;
+}
+
+TEST(PrintSession, RefusesThePrintsimPrinterOutsidePrintsim) {
+  if (std::getenv("TP_PRINTSIM")) GTEST_SKIP() << "running under printsim";
+  PrinterConfig cfg;
+  cfg.printer = "sim";
+  auto s = PrintSession::open(cfg);
+  ASSERT_FALSE(s);
+  EXPECT_NE(s.error().message.find("printsim run"), std::string::npos) << s.error().message;
+}
+
+}  // namespace
+}  // namespace tp::host
