@@ -28,6 +28,8 @@ constexpr double kRoundTrip_mm = 0.05;
 constexpr double kClamp_mm = 0.05;
 // Allowance samples this close to the cut line are skipped (their pixel straddles the edge).
 constexpr double kEdgeMargin_px = 1.0;
+// Allowance samples (three depths per position) are spaced at least this far along the seam.
+constexpr double kAllowanceSpacing_mm = 0.4;
 
 Rgba8 pixel_at(const PieceRenderer& r, int piece, Vec2 p, double mm_per_px) {
   Rgba8 px{};
@@ -165,7 +167,8 @@ Result<ContinuityReport> measure_continuity(const Pattern& pattern, const Garmen
         const auto& seg = chart.segments[k];
         const double w = widths->width_mm[static_cast<size_t>(seg.edge)];
         if (w <= 0) continue;
-        const int n = std::max(1, static_cast<int>(std::ceil(norm(V[static_cast<size_t>(seg.b)] - V[static_cast<size_t>(seg.a)]) / spacing)));
+        const double step = std::max(spacing, kAllowanceSpacing_mm);
+        const int n = std::max(1, static_cast<int>(std::ceil(norm(V[static_cast<size_t>(seg.b)] - V[static_cast<size_t>(seg.a)]) / step)));
         for (int i = 0; i < n; ++i) {
           for (double f : options.depth_fractions) {
             const SeamCoordinates sc{static_cast<int>(k), (i + 0.5) / n, f * w};

@@ -57,7 +57,9 @@ struct ContinuityReport {
 };
 
 struct ContinuityOptions {
-  double spacing_mm = 0;   ///< between samples along a seam; 0: one pixel at the dpi, at least 0.2 mm
+  /// Between samples along a seam; 0: one pixel at the dpi, at least 0.2 mm (allowance samples,
+  /// at each depth, at least 0.4 mm).
+  double spacing_mm = 0;
   std::vector<double> depth_fractions{0.25, 0.5, 0.75};  ///< allowance sample depths, of its width
 };
 

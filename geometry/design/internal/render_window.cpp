@@ -78,6 +78,8 @@ struct Scratch {
 
 thread_local Scratch g_scratch;
 thread_local std::vector<const OutlineEdge*> g_active;
+thread_local std::vector<const StrokeSegment*> g_near_segments;
+thread_local std::vector<std::uint32_t> g_live_tris;
 
 EdgePx make_edge(Vec2 a, Vec2 b) {
   if (a.y > b.y || (a.y == b.y && a.x > b.x)) std::swap(a, b);
@@ -153,17 +155,27 @@ void sample_entry(const EntrySetup& es, const LayerRuntime& L, int i0, int n, in
     }
     return;
   }
-  // Brush stroke: distance from the pixel's surface point to the nearest candidate segment.
+  // Brush stroke: distance from the pixel's surface point to the nearest candidate segment,
+  // after dropping the candidates the whole span stays out of reach of.
   const std::uint32_t* seg = piece.stroke_segments.data() + es.layer->first;
   const auto& segments = L.stroke->segments();
   const double reach = L.stroke->radius_mm() + pixel_mm;
+  const Vec3 s0{es.x3.at(i0, j), es.y3.at(i0, j), es.z3.at(i0, j)};
+  const Vec3 s1{es.x3.at(i0 + n - 1, j), es.y3.at(i0 + n - 1, j), es.z3.at(i0 + n - 1, j)};
+  std::vector<const StrokeSegment*>& near = g_near_segments;
+  near.clear();
+  for (std::uint32_t s = 0; s < es.layer->count; ++s) {
+    const StrokeSegment& sg = segments[seg[s]];
+    if (segment_segment_distance(s0, s1, sg.a, sg.b) < reach) near.push_back(&sg);
+  }
   for (int k = 0; k < n; ++k) {
+    if (near.empty()) {
+      dst[k] = 0;
+      continue;
+    }
     const Vec3 p3{es.x3.at(i0 + k, j), es.y3.at(i0 + k, j), es.z3.at(i0 + k, j)};
     double d = reach;
-    for (std::uint32_t s = 0; s < es.layer->count; ++s) {
-      const StrokeSegment& sg = segments[seg[s]];
-      d = std::min(d, point_segment_distance(p3, sg.a, sg.b));
-    }
+    for (const StrokeSegment* sg : near) d = std::min(d, point_segment_distance(p3, sg->a, sg->b));
     const double c = d >= reach ? 0.0 : L.stroke->coverage(d, pixel_mm) * L.opacity;
     dst[k] = scale_texel(L.colour, static_cast<std::uint32_t>(c * 256.0 + 0.5));
   }
@@ -289,6 +301,12 @@ void render_window(const PieceData& piece, const std::vector<LayerRuntime>& laye
     s.tris.push_back(t);
   }
 
+  // Triangles enter and leave the row sweep in order of their rows.
+  std::sort(s.tris.begin(), s.tris.end(), [](const TriSetup& a, const TriSetup& b) { return a.row0 < b.row0; });
+  std::vector<std::uint32_t>& live = g_live_tris;
+  live.clear();
+  size_t next_tri = 0;
+
   // The cut outline in pixel space, sorted by first row for the sweep.
   s.edges.clear();
   const Polygon& outline = piece.cut_outline;
@@ -333,6 +351,10 @@ void render_window(const PieceData& piece, const std::vector<LayerRuntime>& laye
     prev0 = cur0, prev1 = cur1;
     cur0 = cur1 = 0;
 
+    // Triangles whose rows reach this one.
+    while (next_tri < s.tris.size() && s.tris[next_tri].row0 <= j) live.push_back(static_cast<std::uint32_t>(next_tri++));
+    live.erase(std::remove_if(live.begin(), live.end(), [&](std::uint32_t t) { return s.tris[t].row1 <= j; }), live.end());
+
     // 1. Coverage of the cut outline over this row.
     while (next_edge < s.edges.size() && s.edges[next_edge].y0 < j + 1) active.push_back(&s.edges[next_edge++]);
     active.erase(std::remove_if(active.begin(), active.end(), [j](const OutlineEdge* e) { return e->y1 <= j; }), active.end());
@@ -361,8 +383,8 @@ void render_window(const PieceData& piece, const std::vector<LayerRuntime>& laye
 
     // 2. Design colour at pixel centres, triangle by triangle.
     const double yc = j + 0.5;
-    for (const TriSetup& t : s.tris) {
-      if (j < t.row0 || j >= t.row1) continue;
+    for (std::uint32_t ti : live) {
+      const TriSetup& t = s.tris[ti];
       int i0, i1;
       if (!span(t, yc, i0, i1)) continue;
       i0 = std::max(i0, x0);

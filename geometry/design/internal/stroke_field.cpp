@@ -24,6 +24,22 @@ double point_segment_distance(Vec3 p, Vec3 a, Vec3 b) {
   return norm(p - (a + ab * t));
 }
 
+double segment_segment_distance(Vec3 p, Vec3 q, Vec3 a, Vec3 b) {
+  // Closest points of two segments (clamped parameters), then the four end-point cases as a
+  // guard for parallel or degenerate segments.
+  const Vec3 d1 = q - p, d2 = b - a, r = p - a;
+  const double A = dot(d1, d1), E = dot(d2, d2), F = dot(d2, r);
+  double best = std::min({point_segment_distance(p, a, b), point_segment_distance(q, a, b),
+                          point_segment_distance(a, p, q), point_segment_distance(b, p, q)});
+  if (A <= 0 || E <= 0) return best;
+  const double C = dot(d1, r), B = dot(d1, d2);
+  const double den = A * E - B * B;
+  if (den <= 1e-12 * A * E) return best;
+  const double s = std::clamp((B * F - C * E) / den, 0.0, 1.0);
+  const double t = std::clamp((B * s + F) / E, 0.0, 1.0);
+  return std::min(best, norm((p + d1 * s) - (a + d2 * t)));
+}
+
 StrokeField::StrokeField(const BrushStroke& stroke, const GarmentSurface& surface, const ClosestPointIndex& index)
     : surface_(surface), radius_mm_(stroke.radius_mm), hardness_(std::clamp(stroke.hardness, 0.0, 1.0)) {
   const auto& V = surface.garment().vertices_mm;

@@ -48,4 +48,7 @@ class StrokeField {
 /// Distance from p to segment ab in mm.
 double point_segment_distance(Vec3 p, Vec3 a, Vec3 b);
 
+/// Smallest distance between segments pq and ab in mm.
+double segment_segment_distance(Vec3 p, Vec3 q, Vec3 a, Vec3 b);
+
 }  // namespace tp::geometry::internal
