@@ -30,7 +30,7 @@ struct RunOptions {
   std::string printer_override;
   /// Swaths with index <= this were acknowledged by the printer in an earlier attempt.
   std::int64_t resume_after_swath = -1;
-  /// A numeric id for logs and the printer's job-begin message (0 for command-line runs).
+  /// Non-zero id for logs and the printer's job-begin message (printers use 0 for "no job").
   std::int64_t job_id = 0;
   std::function<void(Stage, StageState, double seconds)> on_stage;
   std::function<void(std::int64_t swath)> on_checkpoint;

@@ -2,6 +2,7 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <ctime>
 #include <filesystem>
 
 #include "host/app/printctl/commands.h"
@@ -83,6 +84,8 @@ void register_job_commands(CLI::App& app) {
     opt.out_dir = out;
     opt.printer_override = run_printer;
     opt.resume_after_swath = resume_after;
+    // Printers report "no job" as id 0, so a command-line run takes a non-zero id of its own.
+    opt.job_id = static_cast<std::int64_t>(std::time(nullptr));
     geometry::CancelToken cancel;
     if (auto st = run_job(*job, opt, cancel); !st) die(st.error(), 1);
     std::printf("job '%s' done: %s\n", job->name.c_str(), (out / "report.json").c_str());
