@@ -54,7 +54,9 @@ std::vector<std::uint32_t> run(RxFaultHook hook, int n, LinkStats* stats = nullp
   EXPECT_TRUE(link.drain(milliseconds(5000)));
   auto st = link.query_status(milliseconds(2000));
   EXPECT_TRUE(st);
-  if (st) EXPECT_EQ(st->last_outcome, JobOutcome::kCompleted);
+  if (st) {
+    EXPECT_EQ(st->last_outcome, JobOutcome::kCompleted);
+  }
   if (stats) *stats = link.stats();
   return sink.printed;
 }
