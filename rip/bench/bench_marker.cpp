@@ -1,9 +1,18 @@
-// rip/bench/bench_marker.cpp: the benchmark's design texture, full-coverage marker and replay source.
+// rip/bench/bench_marker.cpp: the benchmark's jobs (stand-in rectangles, the nested sample skirt
+// with its projected design) and the replay source.
 #include "rip/bench/bench_marker.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+
+#include <spdlog/fmt/fmt.h>
+
+#include "geometry/allowance/finishing.h"
+#include "geometry/design/make_piece_renderer.h"
+#include "geometry/design/sample_designs.h"
+#include "geometry/nesting/nest_pieces.h"
+#include "geometry/samples/garments.h"
 
 namespace tp::rip {
 
@@ -31,30 +40,89 @@ geometry::ImageHandle bench_design_texture(int size_px) {
   return img;
 }
 
-BenchMarker make_bench_marker(double width_mm, double length_mm) {
-  BenchMarker bm;
+BenchJob make_textured_bench_job(double width_mm) {
+  BenchJob job;
   auto texture = bench_design_texture();
   const geometry::Polygon rect{{0, 0}, {kPieceWidthMm, 0}, {kPieceWidthMm, kPieceLengthMm}, {0, kPieceLengthMm}};
   std::vector<TexturedPieceRenderer::Piece> pieces{{rect, texture, kDesignDpi / 25.4, {}}};
-  bm.marker.width_mm = width_mm;
-  bm.marker.length_mm = length_mm;
-  for (double y = 0; y < length_mm; y += kPieceLengthMm)
-    for (double x = 0; x < width_mm; x += kPieceWidthMm) bm.marker.placements.push_back({0, 0, false, {x, y}});
-  bm.marker.utilisation = 1.0;
-  bm.renderer = std::make_unique<TexturedPieceRenderer>(std::move(pieces));
-  return bm;
+  job.block.width_mm = width_mm;
+  job.block.length_mm = kPieceLengthMm;
+  for (double x = 0; x < width_mm; x += kPieceWidthMm) job.block.placements.push_back({0, 0, false, {x, 0}});
+  job.block.utilisation = 1.0;
+  job.renderer = std::make_unique<TexturedPieceRenderer>(std::move(pieces));
+  job.description = "textured-rectangles (stand-in renderer, full coverage)";
+  return job;
 }
 
-ReplaySource::ReplaySource(const BandSource& inner, int cached_rows, std::int64_t height_px)
-    : width_(inner.width_px()), cached_rows_(cached_rows), height_(height_px) {
-  rows_.resize(static_cast<size_t>(width_) * cached_rows_);
-  for (int y = 0; y < cached_rows_; y += kRenderTileRows)
-    inner.render_rows(y, std::min(kRenderTileRows, cached_rows_ - y), rows_.data() + static_cast<size_t>(y) * width_, width_);
+Result<BenchJob> make_garment_bench_job(double width_mm, int threads) {
+  auto sample = geometry::samples::make_garment("skirt8", "M");
+  if (!sample) return fail(ErrorCode::kGeometry, "bench garment skirt8: " + sample.error().what());
+  auto garment = std::make_shared<geometry::samples::SampleGarment>(std::move(*sample));
+  const geometry::Design design = geometry::sample_design("skirt8", garment->garment);
+  geometry::Finishing finishing;
+  finishing.marks = geometry::MarkMode::kNone;
+  geometry::RenderOptions options;
+  options.build_threads = std::max(1, threads);
+  auto renderer = geometry::make_piece_renderer(garment->pattern, garment->garment, design, finishing, options);
+  if (!renderer) return fail(ErrorCode::kGeometry, "bench garment skirt8: " + renderer.error().what());
+
+  // One garment nested across the roll, grain along it.
+  std::vector<geometry::NestItem> items;
+  for (int p = 0; p < (*renderer)->piece_count(); ++p) {
+    geometry::NestItem it;
+    it.piece = p;
+    it.name = garment->pattern.pieces[static_cast<size_t>(p)].name;
+    it.outline_mm = (*renderer)->cut_outline_mm(p);
+    if (const auto& g = garment->pattern.pieces[static_cast<size_t>(p)].grain) it.grain = g->to_mm - g->from_mm;
+    items.push_back(std::move(it));
+  }
+  geometry::NestOptions nest;
+  nest.fabric_width_mm = width_mm;
+  nest.gap_mm = 2;
+  nest.time_limit_s = 5;
+  nest.threads = std::max(1, threads);
+  auto markers = geometry::nest_pieces(items, nest);
+  if (!markers || markers->empty())
+    return fail(ErrorCode::kGeometry,
+                "bench garment skirt8: nesting failed: " + (markers ? std::string("no marker") : markers.error().what()));
+  BenchJob job;
+  job.block = markers->front();
+  job.description = fmt::format("garment-skirt8 (design renderer: cylindrical marbling, textured allowance; {} pieces "
+                                "nested in {:.0f} mm, {:.1f} % used, repeated)",
+                                (*renderer)->piece_count(), job.block.length_mm, job.block.utilisation * 100);
+  job.renderer = std::move(*renderer);
+  job.keep_alive = garment;
+  return job;
+}
+
+geometry::Marker repeat_block(const geometry::Marker& block, double length_mm) {
+  geometry::Marker m;
+  m.width_mm = block.width_mm;
+  m.length_mm = length_mm;
+  m.utilisation = block.utilisation;
+  for (double y = 0; y < length_mm; y += block.length_mm)
+    for (geometry::PiecePlacement pl : block.placements) {
+      pl.offset_mm.y += y;
+      m.placements.push_back(pl);
+    }
+  return m;
+}
+
+ReplaySource::ReplaySource(const BandSource& inner, int cached_tiles, std::int64_t sample_rows, std::int64_t height_px)
+    : width_(inner.width_px()), tiles_(cached_tiles), height_(height_px) {
+  rows_.resize(static_cast<size_t>(width_) * tiles_ * kRenderTileRows);
+  const std::int64_t span_tiles = std::max<std::int64_t>(1, std::min(sample_rows, inner.height_px()) / kRenderTileRows);
+  for (int t = 0; t < tiles_; ++t) {
+    const std::int64_t src_tile = t * span_tiles / tiles_;
+    inner.render_rows(src_tile * kRenderTileRows, kRenderTileRows,
+                      rows_.data() + static_cast<size_t>(t) * kRenderTileRows * width_, width_);
+  }
 }
 
 void ReplaySource::render_rows(std::int64_t y0, int rows, geometry::Rgba8* out, std::ptrdiff_t stride_px) const {
   for (int r = 0; r < rows; ++r) {
-    const std::int64_t src = (y0 + r) % cached_rows_;
+    const std::int64_t y = y0 + r;
+    const std::int64_t src = (y / kRenderTileRows % tiles_) * kRenderTileRows + y % kRenderTileRows;
     std::memcpy(static_cast<void*>(out + r * stride_px), rows_.data() + src * width_, sizeof(geometry::Rgba8) * static_cast<size_t>(width_));
   }
 }

@@ -3,10 +3,13 @@
 #pragma once
 
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "geometry/common/image.h"
+#include "geometry/design/piece_renderer.h"
 #include "geometry/nesting/marker.h"
+#include "rip/common/error.h"
 #include "rip/render/band_source.h"
 #include "rip/render/textured_piece_renderer.h"
 
@@ -16,27 +19,42 @@ namespace tp::rip {
 /// `size_px` square, tileable.
 geometry::ImageHandle bench_design_texture(int size_px = 1024);
 
-/// A full-coverage marker: `width_mm` x `length_mm` tiled with 400 x 500 mm pieces textured with the
-/// design at 150 dpi (upsampled 4x at 600 dpi, as a design image usually is).
-struct BenchMarker {
-  std::unique_ptr<TexturedPieceRenderer> renderer;
-  geometry::Marker marker;
+/// A benchmark job: the renderer of some pieces and one block of them nested across the roll; a
+/// roll of any length repeats the block (repeat_block).
+struct BenchJob {
+  std::shared_ptr<const void> keep_alive;  ///< the garment behind a design renderer
+  std::unique_ptr<geometry::PieceRenderer> renderer;
+  geometry::Marker block;
+  std::string description;                 ///< which renderer and design, for the report
 };
-BenchMarker make_bench_marker(double width_mm, double length_mm);
 
-/// Rows of another source rendered once (the first `cached_rows`), replayed cyclically down a roll of
-/// `height_px`: the cost of "rendering" becomes one copy per pixel.
+/// The stand-in: 400 x 500 mm rectangles tiling the width (full coverage), textured with the
+/// design at 150 dpi (upsampled 4x at 600 dpi, as a design image usually is).
+BenchJob make_textured_bench_job(double width_mm);
+
+/// The real thing: the sample eight-gore skirt (size M) with the paper's cylindrical marbling
+/// projected around the body, rendered through the garment correspondence with textured seam
+/// allowance; one garment's pieces nested on the roll width (grain both ways, 2 mm gaps, 5 s of
+/// search). Fails with the geometry layer's error.
+[[nodiscard]] Result<BenchJob> make_garment_bench_job(double width_mm, int threads);
+
+/// `block` repeated down a marker `length_mm` long; the last copy is cut by the marker's end.
+geometry::Marker repeat_block(const geometry::Marker& block, double length_mm);
+
+/// Render tiles of another source rendered once and replayed cyclically down a roll of `height_px`:
+/// `cached_tiles` tiles taken at even steps over its first `sample_rows` rows, so replayed rows
+/// keep the marker's mix of blank fabric and design. "Rendering" becomes one copy per pixel.
 class ReplaySource final : public BandSource {
  public:
-  ReplaySource(const BandSource& inner, int cached_rows, std::int64_t height_px);
+  ReplaySource(const BandSource& inner, int cached_tiles, std::int64_t sample_rows, std::int64_t height_px);
   int width_px() const override { return width_; }
   std::int64_t height_px() const override { return height_; }
   void render_rows(std::int64_t y0, int rows, geometry::Rgba8* out, std::ptrdiff_t stride_px) const override;
 
  private:
-  int width_, cached_rows_;
+  int width_, tiles_;
   std::int64_t height_;
-  std::vector<geometry::Rgba8> rows_;
+  std::vector<geometry::Rgba8> rows_;  ///< tiles_ * kRenderTileRows rows
 };
 
 }  // namespace tp::rip

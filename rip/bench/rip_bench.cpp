@@ -27,7 +27,7 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 constexpr double kMmPerInch = 25.4;
-constexpr int kReplayRows = 512;   ///< rows rendered once for the after-rendering run
+constexpr int kReplayTiles = 48;   ///< render tiles rendered once for the after-rendering run
 constexpr double kSecondsPerHour = 3600;
 
 std::string num(double v, int decimals = 1) { return fmt::format("{:.{}f}", v, decimals); }
@@ -41,12 +41,12 @@ RipSettings bench_settings(const RipBenchOptions& o) {
   return s;
 }
 
-/// (a): the whole RIP on the full-coverage marker.
-Status measure_whole(const RipBenchOptions& o, const FigureSink& emit) {
-  const BenchMarker bm = make_bench_marker(o.width_m * 1000, o.length_m * 1000);
+/// (a): the whole RIP on the job's marker.
+Status measure_whole(const RipBenchOptions& o, const BenchJob& job, const FigureSink& emit) {
+  const geometry::Marker marker = repeat_block(job.block, o.length_m * 1000);
   const device::PrinterModel printer;
   const auto t0 = Clock::now();
-  auto st = rip_marker(bm.marker, *bm.renderer, printer, bench_settings(o), discard);
+  auto st = rip_marker(marker, *job.renderer, printer, bench_settings(o), discard);
   if (!st) return std::unexpected(st.error());
   const double wall = std::chrono::duration<double>(Clock::now() - t0).count();
   const double px = static_cast<double>(st->width_px) * st->height_px;
@@ -60,6 +60,9 @@ Status measure_whole(const RipBenchOptions& o, const FigureSink& emit) {
   emit("colour_ns_per_px", num(st->colour_cpu_s / px * 1e9, 2));
   emit("screen_ns_per_px", num(st->screen_cpu_s / px * 1e9, 2));
   emit("swath_ns_per_px", num(st->swath_cpu_s / px * 1e9, 2));
+  std::uint64_t inked = 0;
+  for (const auto& d : st->drops) inked += d[1] + d[2] + d[3];
+  emit("drops_per_px", num(static_cast<double>(inked) / px, 3));
   emit("swaths", std::to_string(st->swaths));
   emit("compression_ratio", num(st->compression_ratio, 3));
   emit("wall_s", num(wall, 2));
@@ -67,12 +70,13 @@ Status measure_whole(const RipBenchOptions& o, const FigureSink& emit) {
 }
 
 /// (b): the pipeline after rendering, rows replayed from memory.
-Status measure_after_render(const RipBenchOptions& o, const FigureSink& emit) {
-  const BenchMarker bm = make_bench_marker(o.width_m * 1000, o.length_m * 1000);
+Status measure_after_render(const RipBenchOptions& o, const BenchJob& job, const FigureSink& emit) {
+  const geometry::Marker marker = repeat_block(job.block, o.length_m * 1000);
   const device::PrinterModel printer;
-  auto src = MarkerSource::create(bm.marker, *bm.renderer, printer.dpi_x, printer.dpi_y);
+  auto src = MarkerSource::create(marker, *job.renderer, printer.dpi_x, printer.dpi_y);
   if (!src) return std::unexpected(src.error());
-  const ReplaySource replay(**src, kReplayRows, (*src)->height_px());
+  const auto block_rows = static_cast<std::int64_t>(job.block.length_mm * printer.dpi_y / 25.4);
+  const ReplaySource replay(**src, kReplayTiles, block_rows, (*src)->height_px());
   const auto t0 = Clock::now();
   auto st = run_rip(replay, printer, bench_settings(o), discard);
   if (!st) return std::unexpected(st.error());
@@ -120,8 +124,9 @@ Result<double> run_ghostscript(const std::string& gs, const std::filesystem::pat
 /// The comparison image: the bench design rendered at 600 dpi, as JPEG and JPEG-in-PDF.
 Status prepare_ghostscript_input(const RipBenchOptions& o, const std::filesystem::path& dir, const FigureSink& emit) {
   const double side_mm = std::sqrt(o.ghostscript_area_m2) * 1000;
-  const BenchMarker bm = make_bench_marker(side_mm, side_mm);
-  auto src = MarkerSource::create(bm.marker, *bm.renderer, 600, 600);
+  const BenchJob job = make_textured_bench_job(side_mm);
+  const geometry::Marker marker = repeat_block(job.block, side_mm);
+  auto src = MarkerSource::create(marker, *job.renderer, 600, 600);
   if (!src) return std::unexpected(src.error());
   geometry::ImageRgba8 img;
   img.width_px = (*src)->width_px();
@@ -168,7 +173,15 @@ Status run_rip_bench(const RipBenchOptions& o, const FigureSink& emit) {
   if (!(o.width_m > 0 && o.width_m <= 1.65 && o.length_m > 0))
     return fail(ErrorCode::kInvalidArgument, fmt::format("bench: width {} m (up to 1.65) and length {} m must be positive",
                                                          o.width_m, o.length_m));
-  emit("renderer", "textured-rectangles");  // the stand-in until a garment design renderer is plugged in
+  // The job is built once, before any child is forked: children share it copy-on-write.
+  Result<BenchJob> job = o.renderer == "textured" ? Result<BenchJob>(make_textured_bench_job(o.width_m * 1000))
+                         : o.renderer == "garment"
+                             ? make_garment_bench_job(o.width_m * 1000, o.threads > 0 ? o.threads : 2)
+                             : Result<BenchJob>(fail(ErrorCode::kInvalidArgument, "bench: renderer '" + o.renderer +
+                                                                                      "' is not garment or textured"));
+  if (!job) return std::unexpected(job.error());
+  emit("renderer", job->description);
+  emit("coverage", num(job->block.utilisation, 3));
   emit("dpi", "600x600");
   emit("inks", "4");
   emit("bits_per_pixel", "2");
@@ -176,13 +189,13 @@ Status run_rip_bench(const RipBenchOptions& o, const FigureSink& emit) {
   emit("length_m", num(o.length_m, 2));
   emit("passes", std::to_string(o.passes));
 
-  auto whole = run_in_child([&](const FigureSink& e) { return measure_whole(o, e); });
+  auto whole = run_in_child([&](const FigureSink& e) { return measure_whole(o, *job, e); });
   if (!whole) return std::unexpected(whole.error());
   for (const auto& [k, v] : whole->figures) emit(k, v);
   emit("cpu_m2_per_hour", num(figure(*whole, "area_m2") / (whole->cpu_s / figure(*whole, "threads")) * kSecondsPerHour));
   emit("peak_rss_mb", num(whole->peak_rss_mb));
 
-  auto after = run_in_child([&](const FigureSink& e) { return measure_after_render(o, e); });
+  auto after = run_in_child([&](const FigureSink& e) { return measure_after_render(o, *job, e); });
   if (!after) return std::unexpected(after.error());
   for (const auto& [k, v] : after->figures) emit(k, v);
 
@@ -192,7 +205,7 @@ Status run_rip_bench(const RipBenchOptions& o, const FigureSink& emit) {
     if (len != o.length_m) {
       RipBenchOptions probe = o;
       probe.length_m = len;
-      auto run = run_in_child([&](const FigureSink&) { return measure_whole(probe, [](std::string_view, std::string_view) {}); });
+      auto run = run_in_child([&](const FigureSink&) { return measure_whole(probe, *job, [](std::string_view, std::string_view) {}); });
       if (!run) return std::unexpected(run.error());
       mb = run->peak_rss_mb;
     }

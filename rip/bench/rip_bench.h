@@ -3,6 +3,7 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include "rip/bench/child_process.h"
@@ -13,6 +14,9 @@ namespace tp::rip {
 struct RipBenchOptions {
   double width_m = 1.6;
   double length_m = 1.0;                   ///< roll length of the throughput runs
+  /// "garment": the sample skirt's projected design through the design renderer, nested;
+  /// "textured": the stand-in renderer over full-coverage textured rectangles.
+  std::string renderer = "garment";
   int passes = 1;
   int threads = 0;                         ///< 0: all cores
   bool vs_ghostscript = false;
@@ -23,7 +27,8 @@ struct RipBenchOptions {
 
 /// Runs the benchmark at 600 x 600 dpi, 4 inks, 2-bit drops (the default printer model), printing
 /// key=value figures through `emit` as they come:
-///  - (a) the whole RIP with rendering on a full-coverage marker: m2_per_hour (wall),
+///  - renderer: which job (see RipBenchOptions::renderer), coverage (inked share of the roll);
+///  - (a) the whole RIP with rendering on that marker: m2_per_hour (wall),
 ///    cpu_m2_per_hour (as if the threads had their cores alone: area over CPU time per thread),
 ///    render_m2_per_hour (rendering alone on the same threads), per-stage ns_per_px (CPU),
 ///    compression_ratio, peak_rss_mb;

@@ -59,7 +59,6 @@ struct InkConverter::Table {
   /// The tetrahedron of each fraction order, indexed by (fr>=fg) | (fg>=fb)<<1 | (fr>=fb)<<2.
   struct Tetra {
     std::uint32_t d1, d2;    ///< offsets of the 2nd and 3rd corners (the 4th is the far corner)
-    std::uint8_t i1, i2, i3; ///< which fraction (0 r, 1 g, 2 b) is largest, middle, smallest
   };
   std::array<Tetra, 8> tetra{};
   std::array<AxisStep, 256> axis_r{}, axis_g{}, axis_b{};
@@ -205,14 +204,14 @@ Result<InkConverter> InkConverter::create(const InkConverterSettings& s) {
   }
   // The six tetrahedra of the cube (two comparison patterns cannot occur; they get a valid one).
   const std::uint32_t R = t->stride_r, G = t->stride_g, B = t->stride_b;
-  const Table::Tetra rgb_order{R, R + G, 0, 1, 2};
-  t->tetra = {{Table::Tetra{B, B + G, 2, 1, 0},  // 0: b > g > r
-              Table::Tetra{B, B + R, 2, 0, 1},  // 1: b > r >= g
-              Table::Tetra{G, G + B, 1, 2, 0},  // 2: g >= b > r
+  const Table::Tetra rgb_order{R, R + G};
+  t->tetra = {{Table::Tetra{B, B + G},  // 0: b > g > r
+              Table::Tetra{B, B + R},  // 1: b > r >= g
+              Table::Tetra{G, G + B},  // 2: g >= b > r
               rgb_order,                        // 3: impossible
               rgb_order,                        // 4: impossible
-              Table::Tetra{R, R + B, 0, 2, 1},  // 5: r >= b > g
-              Table::Tetra{G, G + R, 1, 0, 2},  // 6: g > r >= b
+              Table::Tetra{R, R + B},  // 5: r >= b > g
+              Table::Tetra{G, G + R},  // 6: g > r >= b
               rgb_order}};                      // 7: r >= g >= b
   logger().debug("{}: {}^3 ink table for {} inks, limit {} (8-bit units)", pname, g, nc, t->limit_8bit);
   return InkConverter(std::move(t));
@@ -227,13 +226,68 @@ bool InkConverter::convert_row(const geometry::Rgba8* in, int n, std::uint8_t* c
   const int nc = t.channels, lanes = t.lanes;
   const std::int16_t* nodes = t.nodes.data();
   const std::uint32_t far = t.stride_r + t.stride_g + t.stride_b;
+  // Byte stores may alias anything: keep the plane pointers in a local array the stores cannot
+  // reach, or the compiler reloads them after every store.
+  std::uint8_t* plane[16];
+  for (int c = 0; c < nc; ++c) plane[c] = out[c];
   std::uint32_t last_rgb = 0xffffffffu;  // never a real key: keys have a zero top byte
   alignas(16) std::uint8_t last_ink[16] = {};
   bool any = false;
+#if defined(__SSE2__)
+  if (lanes == kLane) {
+    // Up to four inks, in blocks: first every pixel's inks packed in 32 bits (no stores into the
+    // planes between interpolations, so consecutive pixels overlap in the pipeline), then the
+    // block is split into planes and scaled by coverage.
+    constexpr int kBlock = 256;
+    alignas(16) std::uint32_t packed[kBlock];
+    const __m128i half = _mm_set1_epi32(kFracOne * kNodeScale / 2);
+    std::uint32_t ink4 = 0;
+    for (int i0 = 0; i0 < n; i0 += kBlock) {
+      const int m = std::min(kBlock, n - i0);
+      bool block_any = false;
+      for (int j = 0; j < m; ++j) {
+        const geometry::Rgba8 p = in[i0 + j];
+        const std::uint32_t key = p.r | (p.g << 8) | (p.b << 16);
+        block_any |= p.a != 0;
+        if (key != last_rgb) {
+          last_rgb = key;
+          const AxisStep ar = t.axis_r[p.r], ag = t.axis_g[p.g], ab = t.axis_b[p.b];
+          const std::int16_t* c0 = nodes + ar.offset + ag.offset + ab.offset;
+          const std::uint32_t fr = ar.frac, fg = ag.frac, fb = ab.frac;
+          const Table::Tetra& tt = t.tetra[(fr >= fg) | ((fg >= fb) << 1) | ((fr >= fb) << 2)];
+          const std::uint32_t f1 = std::max(fr, std::max(fg, fb)), f3 = std::min(fr, std::min(fg, fb));
+          const std::uint32_t f2 = fr + fg + fb - f1 - f3;
+          const __m128i wa = _mm_set1_epi32(static_cast<int>((kFracOne - f1) | ((f1 - f2) << 16)));
+          const __m128i wb = _mm_set1_epi32(static_cast<int>((f2 - f3) | (f3 << 16)));
+          const __m128i a0 = _mm_loadl_epi64(reinterpret_cast<const __m128i*>(c0));
+          const __m128i a1 = _mm_loadl_epi64(reinterpret_cast<const __m128i*>(c0 + tt.d1));
+          const __m128i a2 = _mm_loadl_epi64(reinterpret_cast<const __m128i*>(c0 + tt.d2));
+          const __m128i a3 = _mm_loadl_epi64(reinterpret_cast<const __m128i*>(c0 + far));
+          __m128i acc = _mm_add_epi32(_mm_madd_epi16(_mm_unpacklo_epi16(a0, a1), wa),
+                                      _mm_madd_epi16(_mm_unpacklo_epi16(a2, a3), wb));
+          acc = _mm_srli_epi32(_mm_add_epi32(acc, half), 15);
+          const __m128i v16 = _mm_packs_epi32(acc, acc);
+          ink4 = static_cast<std::uint32_t>(_mm_cvtsi128_si32(_mm_packus_epi16(v16, v16)));
+        }
+        packed[j] = ink4;
+      }
+      any |= block_any;
+      for (int j = 0; j < m; ++j) {
+        const std::uint32_t a = in[i0 + j].a;
+        // Coverage scales every ink by a/255 rounding down (a = 255 keeps them, a = 0 clears them),
+        // so scaled inks never exceed the limit.
+        const std::uint32_t scale = a == 255 ? 65536u : a * 257u + 1u - (a == 0);
+        const std::uint32_t v = packed[j];
+        for (int c = 0; c < nc; ++c) plane[c][i0 + j] = static_cast<std::uint8_t>((((v >> (8 * c)) & 0xffu) * scale) >> 16);
+      }
+    }
+    return any;
+  }
+#endif
   for (int i = 0; i < n; ++i) {
     const geometry::Rgba8 p = in[i];
     if (p.a == 0) {
-      for (int c = 0; c < nc; ++c) out[c][i] = 0;
+      for (int c = 0; c < nc; ++c) plane[c][i] = 0;
       continue;
     }
     any = true;
@@ -245,9 +299,11 @@ bool InkConverter::convert_row(const geometry::Rgba8* in, int n, std::uint8_t* c
       last_rgb = key;
       const AxisStep ar = t.axis_r[p.r], ag = t.axis_g[p.g], ab = t.axis_b[p.b];
       const std::int16_t* c0 = nodes + ar.offset + ag.offset + ab.offset;
-      const std::uint32_t f[3] = {ar.frac, ag.frac, ab.frac};
-      const Table::Tetra& tt = t.tetra[(f[0] >= f[1]) | ((f[1] >= f[2]) << 1) | ((f[0] >= f[2]) << 2)];
-      const std::uint32_t f1 = f[tt.i1], f2 = f[tt.i2], f3 = f[tt.i3];
+      const std::uint32_t fr = ar.frac, fg = ag.frac, fb = ab.frac;
+      const Table::Tetra& tt = t.tetra[(fr >= fg) | ((fg >= fb) << 1) | ((fr >= fb) << 2)];
+      // Largest, middle and smallest fraction without indexing.
+      const std::uint32_t f1 = std::max(fr, std::max(fg, fb)), f3 = std::min(fr, std::min(fg, fb));
+      const std::uint32_t f2 = fr + fg + fb - f1 - f3;
       const std::int16_t* c1 = c0 + tt.d1;
       const std::int16_t* c2 = c0 + tt.d2;
       const std::int16_t* c3 = c0 + far;
@@ -278,11 +334,11 @@ bool InkConverter::convert_row(const geometry::Rgba8* in, int n, std::uint8_t* c
 #endif
     }
     if (p.a == 255) {
-      for (int c = 0; c < nc; ++c) out[c][i] = last_ink[c];
+      for (int c = 0; c < nc; ++c) plane[c][i] = last_ink[c];
     } else {
       // Partial coverage: scale by a/255 rounding down, so scaled inks never exceed the limit.
       const std::uint32_t scale = p.a * 257u + 1u;
-      for (int c = 0; c < nc; ++c) out[c][i] = static_cast<std::uint8_t>((last_ink[c] * scale) >> 16);
+      for (int c = 0; c < nc; ++c) plane[c][i] = static_cast<std::uint8_t>((last_ink[c] * scale) >> 16);
     }
   }
   return any;

@@ -17,8 +17,8 @@ constexpr int kRowPx = 37795;  ///< 1.6 m at 600 dpi
 
 /// One rendered row of the benchmark design (photographic statistics, not a flat colour).
 std::vector<geometry::Rgba8> design_row(int row) {
-  static const BenchMarker bm = make_bench_marker(1600, 500);
-  static const auto src = MarkerSource::create(bm.marker, *bm.renderer, 600, 600);
+  static const BenchJob job = make_textured_bench_job(1600);
+  static const auto src = MarkerSource::create(job.block, *job.renderer, 600, 600);
   std::vector<geometry::Rgba8> px(static_cast<size_t>(kRowPx) * kRenderTileRows);
   (*src)->render_rows(row / kRenderTileRows * kRenderTileRows, kRenderTileRows, px.data(), kRowPx);
   px.resize(kRowPx);
@@ -75,8 +75,8 @@ void BM_PackBitsScreenedRow(benchmark::State& state) {
 BENCHMARK(BM_PackBitsScreenedRow)->Arg(0)->Arg(40)->Arg(128)->Arg(255);
 
 void BM_RenderTile(benchmark::State& state) {
-  const BenchMarker bm = make_bench_marker(1600, 500);
-  auto src = MarkerSource::create(bm.marker, *bm.renderer, 600, 600);
+  const BenchJob job = make_textured_bench_job(1600);
+  auto src = MarkerSource::create(job.block, *job.renderer, 600, 600);
   std::vector<geometry::Rgba8> px(static_cast<size_t>(kRowPx) * kRenderTileRows);
   std::int64_t y = 0;
   for (auto _ : state) {
