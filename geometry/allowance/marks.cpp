@@ -28,6 +28,10 @@ struct Run {
 std::vector<Run> straight_runs(const Piece& piece, const PieceAllowance& a) {
   std::vector<Run> runs;
   for (size_t e = 0; e < piece.edges.size(); ++e) {
+    // A dart's legs fold inside the garment together: no room for marks between them.
+    bool dart_leg = false;
+    for (const Dart& d : piece.darts) dart_leg |= d.leg_a == static_cast<int>(e) || d.leg_b == static_cast<int>(e);
+    if (dart_leg) continue;
     const auto& P = piece.edges[e].points_mm;
     size_t i = 0;
     while (i + 1 < P.size()) {

@@ -39,6 +39,19 @@ ClosestPointIndex::ClosestPointIndex(const std::vector<Vec3>& v, const std::vect
 
 ClosestPointIndex::~ClosestPointIndex() = default;
 
+MeshHit ClosestPointIndex::first_hit(Vec3 origin, Vec3 direction) const {
+  MeshHit hit;
+  if (impl_->triangles.empty() || norm(direction) == 0) return hit;
+  const K::Ray_3 ray(K::Point_3(origin.x, origin.y, origin.z), K::Vector_3(direction.x, direction.y, direction.z));
+  const auto found = impl_->tree.first_intersection(ray);
+  if (!found) return hit;
+  const K::Point_3* p = boost::get<K::Point_3>(&found->first);
+  if (!p) return hit;  // the ray runs inside a triangle's plane: no single point
+  hit = nearest({p->x(), p->y(), p->z()});
+  hit.distance_mm = norm(hit.point_mm - origin);
+  return hit;
+}
+
 MeshHit ClosestPointIndex::nearest(Vec3 p) const {
   MeshHit hit;
   if (impl_->triangles.empty()) return hit;

@@ -28,6 +28,9 @@ class ClosestPointIndex {
   /// The nearest surface point to `p` (triangle -1 for an empty mesh).
   MeshHit nearest(Vec3 p) const;
 
+  /// Where the ray from `origin` along `direction` first meets the mesh (triangle -1: nowhere).
+  MeshHit first_hit(Vec3 origin, Vec3 direction) const;
+
  private:
   struct Impl;
   std::unique_ptr<Impl> impl_;
