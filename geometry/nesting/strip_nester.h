@@ -85,6 +85,8 @@ struct StripSolution {
   std::uint64_t iterations = 0;  ///< separator iterations run
   std::uint64_t evaluations = 0; ///< candidate placements evaluated by the search
   double constructive_length = 0;  ///< length after the constructive placement
+  /// Shrinks the search made feasible again / gave up on, in exploration and in compression.
+  std::uint64_t explore_feasible = 0, explore_failed = 0, compress_feasible = 0, compress_failed = 0;
 };
 
 /// Nests every copy of every item on the strip.

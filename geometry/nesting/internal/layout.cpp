@@ -43,6 +43,7 @@ void make_placed(const OrientedShape& o, const ItemShape& s, const Pose& pose, V
 Layout::Layout(const NestContext* ctx, double x_hi) : ctx_(ctx), x_hi_(x_hi) {
   const int n = static_cast<int>(ctx->copy_type.size());
   items_.resize(n);
+  boxes_.resize(n);
   hazards_.resize(ctx->hazards.size());
   for (size_t h = 0; h < ctx->hazards.size(); ++h) {
     const ItemShape& s = ctx->hazards[h];
@@ -82,8 +83,8 @@ double Layout::container_loss(const Box2& box, double hull_area) const {
 }
 
 double Layout::pair_loss(const Vec2* pts, int n, const Box2& box, Vec2 inner, const std::vector<Circle>& poles,
-                         Vec2 pole_shift, double hull_a, double diam_a, const Placed& other,
-                         QueryScratch& s) const {
+                         Vec2 pole_shift, double hull_a, double diam_a, const Placed& other, QueryScratch& s,
+                         double limit) const {
   if (!boxes_touch(box, other.box)) return 0;
   // Overlapping poles prove a collision at once (most rejected samples overlap deeply); only
   // otherwise are the boundaries compared.
@@ -107,8 +108,13 @@ double Layout::pair_loss(const Vec2* pts, int n, const Box2& box, Vec2 inner, co
     if (!polygons_collide(a, b, s.edges_a, s.edges_b)) return 0;
   }
   const double eps = kProxyEpsilonDiameterRatio * hi(diam_a, other.diameter);
-  const double proxy = overlap_proxy(other.pole_soa, poles, pole_shift, eps) + eps * eps;
-  return std::sqrt(proxy) * std::sqrt(std::sqrt(hull_a) * std::sqrt(other.hull_area));
+  const double penalty = std::sqrt(std::sqrt(hull_a) * std::sqrt(other.hull_area));
+  // loss = sqrt(proxy + eps^2) * penalty > limit  <=>  proxy > (limit / penalty)^2 - eps^2.
+  const double proxy_limit = limit >= kUnbounded ? kUnbounded : (limit / penalty) * (limit / penalty) - eps * eps;
+  if (proxy_limit < 0) return kInf;
+  const double proxy = overlap_proxy(other.pole_soa, poles, pole_shift, eps, proxy_limit);
+  if (proxy > proxy_limit) return kInf;
+  return std::sqrt(proxy + eps * eps) * penalty;
 }
 
 double Layout::weighted_loss(int k, const Candidate& c, double bound, QueryScratch& s) const {
@@ -132,11 +138,12 @@ double Layout::weighted_loss(int k, const Candidate& c, double bound, QueryScrat
   };
   const Vec2 inner = o.poles[0].c + c.t;
   const PairEntry* row = &pairs_[static_cast<size_t>(k) * cols_];
-  for (int j = 0, m = static_cast<int>(items_.size()); j < m; ++j) {
+  for (int j = 0, m = static_cast<int>(boxes_.size()); j < m; ++j) {
+    if (!boxes_touch(box, boxes_[j]) || j == k) continue;
     const Placed& p = items_[j];
-    if (j == k || !p.present || !boxes_touch(box, p.box)) continue;
     ensure_pts();
-    const double l = pair_loss(s.pts.data(), n, box, inner, o.poles, c.t, shape.hull_area, shape.diameter, p, s);
+    const double l = pair_loss(s.pts.data(), n, box, inner, o.poles, c.t, shape.hull_area, shape.diameter, p, s,
+                               (bound - loss) / row[j].weight);
     if (l > 0) {
       loss += l * row[j].weight;
       if (loss > bound) return kInf;
@@ -146,9 +153,11 @@ double Layout::weighted_loss(int k, const Candidate& c, double bound, QueryScrat
     const Placed& p = hazards_[h];
     if (!boxes_touch(box, p.box)) continue;
     ensure_pts();
-    const double l = pair_loss(s.pts.data(), n, box, inner, o.poles, c.t, shape.hull_area, shape.diameter, p, s);
+    const double w = row[items_.size() + h].weight;
+    const double l = pair_loss(s.pts.data(), n, box, inner, o.poles, c.t, shape.hull_area, shape.diameter, p, s,
+                               (bound - loss) / w);
     if (l > 0) {
-      loss += l * row[items_.size() + h].weight;
+      loss += l * w;
       if (loss > bound) return kInf;
     }
   }
@@ -172,10 +181,9 @@ bool Layout::collides(int k, const Candidate& c, double x_limit, QueryScratch& s
     const PolyRef b{p.pts.data(), static_cast<int>(p.pts.size()), p.box, p.poles[0].c};
     return polygons_collide(a, b, s.edges_a, s.edges_b);
   };
-  for (int j = 0, m = static_cast<int>(items_.size()); j < m; ++j) {
-    const Placed& p = items_[j];
-    if (j == k || !p.present || !boxes_touch(box, p.box)) continue;
-    if (hit(p)) return true;
+  for (int j = 0, m = static_cast<int>(boxes_.size()); j < m; ++j) {
+    if (!boxes_touch(box, boxes_[j]) || j == k) continue;
+    if (hit(items_[j])) return true;
   }
   for (const Placed& p : hazards_)
     if (boxes_touch(box, p.box) && hit(p)) return true;
@@ -185,10 +193,16 @@ bool Layout::collides(int k, const Candidate& c, double x_limit, QueryScratch& s
 void Layout::place(int k, const Pose& pose, Vec2 t, QueryScratch& scratch, bool track) {
   const OrientedShape& o = shape_for(k, pose, scratch);
   make_placed(o, ctx_->shapes[ctx_->copy_type[k]], pose, t, items_[k]);
+  sync_box(k);
   if (track) recompute_row(k, scratch);
 }
 
-void Layout::remove(int k) { items_[k].present = false; }
+void Layout::remove(int k) {
+  items_[k].present = false;
+  sync_box(k);
+}
+
+void Layout::sync_box(int k) { boxes_[k] = items_[k].present ? items_[k].box : Box2{}; }
 
 void Layout::recompute_row(int k, QueryScratch& s) {
   const Placed& a = items_[k];
@@ -224,6 +238,7 @@ void Layout::resize(double new_x_hi, double split_x, QueryScratch& scratch) {
     for (Circle& c : p.poles) c.c += shift;
     p.pole_soa.assign(p.poles);
     p.box = shifted(p.box, shift);
+    sync_box(k);
     p.original_max_x += delta;
     p.original_min_x += delta;
   }
@@ -236,6 +251,7 @@ void Layout::resize(double new_x_hi, double split_x, QueryScratch& scratch) {
 void Layout::restore_keep_weights(const Layout& other) {
   x_hi_ = other.x_hi_;
   items_ = other.items_;
+  boxes_ = other.boxes_;
   for (size_t i = 0; i < pairs_.size(); ++i) pairs_[i].loss = other.pairs_[i].loss;
   for (size_t i = 0; i < container_.size(); ++i) container_[i].loss = other.container_[i].loss;
 }
@@ -269,11 +285,11 @@ double Layout::item_loss(int k) const {
 
 void Layout::update_weights(const GlsWeights& w) {
   double max_loss = 0;
-  for (const PairEntry& e : pairs_) max_loss = std::fmax(max_loss, e.loss);
-  for (const PairEntry& e : container_) max_loss = std::fmax(max_loss, e.loss);
+  for (const PairEntry& e : pairs_) max_loss = hi(max_loss, e.loss);
+  for (const PairEntry& e : container_) max_loss = hi(max_loss, e.loss);
   auto update = [&](PairEntry& e) {
     const double m = e.loss > 0 ? w.min_increase + (w.max_increase - w.min_increase) * (e.loss / max_loss) : w.decay;
-    e.weight = std::fmax(1.0, e.weight * m);
+    e.weight = hi(1.0, e.weight * m);
   };
   // Item pairs are stored twice (i,j) and (j,i): update the upper triangle and mirror it.
   const int n = size();

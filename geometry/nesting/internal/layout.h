@@ -109,8 +109,11 @@ class Layout {
   double used_original_x_hi() const;
 
  private:
+  /// Loss of a shape against a placed copy (0: no collision); +inf once it exceeds `limit`.
   double pair_loss(const Vec2* pts, int n, const Box2& box, Vec2 inner, const std::vector<Circle>& poles,
-                   Vec2 pole_shift, double hull_a, double diam_a, const Placed& other, QueryScratch& s) const;
+                   Vec2 pole_shift, double hull_a, double diam_a, const Placed& other, QueryScratch& s,
+                   double limit = kUnbounded) const;
+  static constexpr double kUnbounded = 1e300;
   double container_loss(const Box2& box, double hull_area) const;
   void recompute_row(int k, QueryScratch& scratch);
   PairEntry& pair(int i, int j) { return pairs_[static_cast<size_t>(i) * cols_ + j]; }
@@ -118,7 +121,11 @@ class Layout {
 
   const NestContext* ctx_ = nullptr;
   double x_hi_ = 0;
+  void sync_box(int k);
+
   std::vector<Placed> items_;
+  /// Boxes of the copies, contiguous for the broad phase; absent copies get an empty box.
+  std::vector<Box2> boxes_;
   std::vector<Placed> hazards_;
   int cols_ = 0;                    ///< copies + hazards
   std::vector<PairEntry> pairs_;    ///< row per copy; columns: copies then hazards

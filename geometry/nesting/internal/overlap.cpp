@@ -30,6 +30,8 @@ inline bool edge_touches_box(Vec2 a, Vec2 b, const Box2& box) {
          hi(a.y, b.y) >= box.min.y;
 }
 
+constexpr double kPi = 3.14159265358979323846;
+
 // Padding lanes sit this far away with radius 0, so they add exactly 0.
 constexpr float kFarAway = 1e15f;
 
@@ -90,7 +92,7 @@ void PoleSoA::assign(const std::vector<Circle>& poles) {
   }
 }
 
-double overlap_proxy(const PoleSoA& a, const std::vector<Circle>& b, Vec2 shift_b, double eps) {
+double overlap_proxy(const PoleSoA& a, const std::vector<Circle>& b, Vec2 shift_b, double eps, double limit) {
   const size_t n = a.x.size();
   const float e = static_cast<float>(eps), e2 = e * e;
 #if defined(__SSE2__)
@@ -112,6 +114,11 @@ double overlap_proxy(const PoleSoA& a, const std::vector<Circle>& b, Vec2 shift_
       const __m128 depth = _mm_or_ps(_mm_and_ps(deep, pd), _mm_andnot_ps(deep, tail));
       sum = _mm_add_ps(sum, _mm_mul_ps(depth, _mm_min_ps(qr, ar)));
     }
+    // The largest poles come first: checking the bound after each one rejects bad samples early.
+    alignas(16) float lanes[4];
+    _mm_store_ps(lanes, sum);
+    const double partial = kPi * ((static_cast<double>(lanes[0]) + lanes[1]) + (static_cast<double>(lanes[2]) + lanes[3]));
+    if (partial > limit) return partial;
   }
   alignas(16) float lanes[4];
   _mm_store_ps(lanes, sum);
@@ -127,10 +134,12 @@ double overlap_proxy(const PoleSoA& a, const std::vector<Circle>& b, Vec2 shift_
       const float depth = pd >= e ? pd : e2 / (2 * e - pd);
       lanes[i % 4] += depth * (qr < a.r[i] ? qr : a.r[i]);
     }
+    const double partial = kPi * ((static_cast<double>(lanes[0]) + lanes[1]) + (static_cast<double>(lanes[2]) + lanes[3]));
+    if (partial > limit) return partial;
   }
   const double total = (static_cast<double>(lanes[0]) + lanes[1]) + (static_cast<double>(lanes[2]) + lanes[3]);
 #endif
-  return 3.14159265358979323846 * total;
+  return kPi * total;
 }
 
 }  // namespace tp::geometry::nesting

@@ -47,7 +47,9 @@ struct PolyRef {
 /// Overlap proxy between two sets of poles (those of `b` shifted by `shift_b`): the sum over pole
 /// pairs of their penetration depth times the smaller radius, with a smooth positive tail of
 /// width `eps` for pairs that do not penetrate. Units mm². Single precision: it ranks
-/// placements, it does not decide collisions.
-[[nodiscard]] double overlap_proxy(const PoleSoA& a, const std::vector<Circle>& b, Vec2 shift_b, double eps);
+/// placements, it does not decide collisions. Every term is positive, so the sum stops (and is
+/// returned, above `limit`) as soon as it passes `limit`.
+[[nodiscard]] double overlap_proxy(const PoleSoA& a, const std::vector<Circle>& b, Vec2 shift_b, double eps,
+                                   double limit = 1e300);
 
 }  // namespace tp::geometry::nesting

@@ -75,7 +75,7 @@ void disrupt(Layout& layout, double large_item_share, Rng& rng, QueryScratch& sc
 }
 
 void explore(Layout& best, Separator& sep, const StripSearchConfig& config, Budget& budget, Rng& rng,
-             const ImprovementHook& on_improvement) {
+             const ImprovementHook& on_improvement, SearchStats& stats) {
   QueryScratch scratch;
   Layout cur = best;
   const double x_lo = best.ctx().x_lo;
@@ -89,6 +89,7 @@ void explore(Layout& best, Separator& sep, const StripSearchConfig& config, Budg
   std::vector<std::pair<double, Layout>> pool;
   while (!budget.exhausted()) {
     if (sep.separate(cur, config.explore_separator, budget)) {
+      ++stats.explore_feasible;
       fit_strip(cur, scratch);
       if (cur.x_hi() < best.x_hi()) {
         best = cur;
@@ -99,6 +100,7 @@ void explore(Layout& best, Separator& sep, const StripSearchConfig& config, Budg
       continue;
     }
     if (budget.exhausted()) break;
+    ++stats.explore_failed;
     // Stuck: remember this layout, restart from a good one of the pool, shaken.
     const double loss = cur.total_loss();
     auto at = std::upper_bound(pool.begin(), pool.end(), loss,
@@ -112,7 +114,7 @@ void explore(Layout& best, Separator& sep, const StripSearchConfig& config, Budg
 }
 
 void compress(Layout& best, Separator& sep, const StripSearchConfig& config, Budget& budget, Rng& rng,
-              const ImprovementHook& on_improvement) {
+              const ImprovementHook& on_improvement, SearchStats& stats) {
   QueryScratch scratch;
   const double x_lo = best.ctx().x_lo;
   Layout cur = best;
@@ -124,11 +126,14 @@ void compress(Layout& best, Separator& sep, const StripSearchConfig& config, Bud
     cur.resize(x_lo + len * (1.0 - shrink), rng.uniform(x_lo, best.x_hi()), scratch);
     sep.reseed(rng);
     if (sep.separate(cur, config.compress_separator, budget)) {
+      ++stats.compress_feasible;
       fit_strip(cur, scratch);
       if (cur.x_hi() < best.x_hi()) {
         best = cur;
         if (on_improvement) on_improvement(best);
       }
+    } else if (!budget.exhausted()) {
+      ++stats.compress_failed;
     }
   }
 }

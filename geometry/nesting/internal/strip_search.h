@@ -2,6 +2,7 @@
 // (shrink, separate, disrupt when stuck) then compression (small shrinks at random places).
 #pragma once
 
+#include <cstdint>
 #include <functional>
 
 #include "geometry/nesting/internal/layout.h"
@@ -22,18 +23,24 @@ struct StripSearchConfig {
   SeparatorConfig compress_separator{100, 5, {50, 25, 3}, {}};
 };
 
+/// How often each phase made the shrunk strip feasible again, and how often it failed.
+struct SearchStats {
+  std::uint64_t explore_feasible = 0, explore_failed = 0;
+  std::uint64_t compress_feasible = 0, compress_failed = 0;
+};
+
 /// Called with every better feasible layout.
 using ImprovementHook = std::function<void(const Layout&)>;
 
 /// Shrinks the strip while the separator can make the layout feasible again. `best` is feasible on
 /// entry and holds the best (shortest) feasible layout on return, its strip fitted to it.
 void explore(Layout& best, Separator& sep, const StripSearchConfig& config, Budget& budget, Rng& rng,
-             const ImprovementHook& on_improvement);
+             const ImprovementHook& on_improvement, SearchStats& stats);
 
 /// Tries many small shrinks of `best` (feasible, fitted) at random split positions, keeping each
 /// that the separator makes feasible.
 void compress(Layout& best, Separator& sep, const StripSearchConfig& config, Budget& budget, Rng& rng,
-              const ImprovementHook& on_improvement);
+              const ImprovementHook& on_improvement, SearchStats& stats);
 
 /// Swaps two large copies (and what lies under them) to leave a local minimum.
 void disrupt(Layout& layout, double large_item_share, Rng& rng, QueryScratch& scratch);
