@@ -101,8 +101,9 @@ TEST(SamplePatterns, DartsSleevesAndGoresAreSewn) {
 
   auto skirt = samples::draft_garment("skirt8", *m, "M");
   ASSERT_TRUE(skirt);
-  for (const auto& [piece, f] : sewn_fraction(*skirt))
+  for (const auto& [piece, f] : sewn_fraction(*skirt)) {
     if (piece != "waistband") EXPECT_GT(f, 0.6) << piece;  // both seams and the waist
+  }
 }
 
 TEST(SamplePatterns, SizesGradeAndBadNamesFail) {
