@@ -46,6 +46,29 @@ void register_job_commands(CLI::App& app) {
     std::printf("%s: valid job '%s'\n", validate_path.c_str(), job->name.c_str());
   });
 
+  static std::string model_job, model_out;
+  CLI::App* model = app.add_subcommand("printer-model", "Write the printer model a job plans its swaths for "
+                                                        "(for printsim --printer)");
+  model->add_option("job", model_job, "Job folder or .zip")->required();
+  model->add_option("--out", model_out, "File to write (default: standard output)");
+  model->callback([] {
+    fs::path scratch = fs::temp_directory_path() / ("printctl-model-" + std::to_string(::getpid()));
+    auto job = open_job(model_job, scratch);
+    std::error_code ec;
+    fs::remove_all(scratch, ec);
+    if (!job) die(job.error(), 1);
+    auto m = job_printer_model(*job);
+    if (!m) die(m.error(), 1);
+    const std::string text = device::format_printer_model(*m);
+    if (model_out.empty()) {
+      std::fputs(text.c_str(), stdout);
+      return;
+    }
+    std::FILE* f = std::fopen(model_out.c_str(), "w");
+    if (!f || std::fputs(text.c_str(), f) < 0) die(Error{ErrorCode::kIo, model_out + ": cannot write"}, 1);
+    std::fclose(f);
+  });
+
   static std::string run_path, run_out, run_printer;
   static long long resume_after = -1;
   CLI::App* run = app.add_subcommand("run", "Run a job end to end and print it");
