@@ -56,6 +56,8 @@ struct DesignLayerSpec {
   std::array<int, 4> colour_rgba{0, 0, 0, 255};
   double hardness = 0.8;
   std::optional<std::filesystem::path> mesh;          ///< texture transfer: textured OBJ
+  double mesh_scale_to_mm = 1.0;                      ///< texture transfer: the OBJ's units
+  double max_distance_mm = 30;                        ///< texture transfer: farther garment points stay unprinted
 };
 
 /// Per-edge allowance override.

@@ -129,9 +129,12 @@ void read_layer(FieldReader l, const JobPackage* pkg, DesignLayerSpec& s) {
     }
     if (auto pts = l.vector_list<3>("points", true, true, 1)) s.points_mm = *pts;
   } else if (s.type == "texture") {
-    known.insert({"mesh", "image"});
+    known.insert({"mesh", "image", "units", "max_distance"});
     read_asset(l, "mesh", true, pkg, s.mesh);
     read_asset(l, "image", true, pkg, s.image);
+    if (auto units = l.choice("units", false, {"mm", "cm", "m", "in"}))
+      s.mesh_scale_to_mm = *units == "mm" ? 1 : *units == "cm" ? 10 : *units == "m" ? 1000 : 25.4;
+    if (auto v = l.length_mm("max_distance", false, 0.1, 1000)) s.max_distance_mm = *v;
   }
   l.reject_unknown(known);
 }

@@ -1,6 +1,7 @@
 // host/pipeline/stage_design.cpp: the design stage: the job's layers (images read through the
 // RIP's colour-managed reader, or generated), its finishing, and the piece renderer over both.
 #include "geometry/design/make_piece_renderer.h"
+#include "geometry/design/texture_model.h"
 #include "geometry/design/textures.h"
 #include "host/pipeline/internal/pipeline_state.h"
 #include "rip/image/image_io.h"
@@ -77,9 +78,18 @@ Result<geometry::Design> build_design(const Job& job) {
                   static_cast<std::uint8_t>(s.colour_rgba[2]), static_cast<std::uint8_t>(s.colour_rgba[3])};
       b.hardness = s.hardness;
       layer.content = std::move(b);
+    } else if (s.type == "texture" && s.mesh) {
+      const std::string where = "job.json: /design/layers/" + std::to_string(i);
+      auto model = geometry::load_texture_model(*s.mesh, s.mesh_scale_to_mm);
+      if (!model) return fail(ErrorCode::kValidation, where + "/mesh: " + model.error().message);
+      auto img = layer_image(s, i);
+      if (!img) return fail(img.error());
+      model->image = *img;
+      model->max_distance_mm = s.max_distance_mm;
+      layer.content = std::move(*model);
     } else {
-      return fail(ErrorCode::kValidation, "job.json: /design/layers/" + std::to_string(i) +
-                                              ": texture transfer layers are read by the design engineer's loader");
+      return fail(ErrorCode::kValidation, "job.json: /design/layers/" + std::to_string(i) + ": unknown layer type '" +
+                                              s.type + "'");
     }
     d.layers.push_back(std::move(layer));
   }
