@@ -109,6 +109,8 @@ Status PrintSession::fail_job(ErrorCode code, const std::string& message) {
 
 Status PrintSession::begin_job(const JobStart& job) {
   if (active_) return fail(ErrorCode::kInvalidArgument, "begin_job: job " + std::to_string(job_.job_id) + " is still open");
+  // The printer reports job id 0 as "no job", so a job numbered 0 could never be seen to finish.
+  if (job.job_id == 0) return fail(ErrorCode::kInvalidArgument, "begin_job: job id 0 is reserved for \"no job\"");
   job_ = job;
   acked_next_ = printed_next_ = swath_count_ = job.first_swath;
   fed_um_ = 0;

@@ -216,6 +216,19 @@ TEST(PrintSession, RefusesAnIncompatiblePrinter) {
       << s.error().message;
 }
 
+TEST(PrintSession, RefusesJobIdZeroWhichThePrinterReportsAsNoJob) {
+  Rig r;
+  r.open();
+  JobStart js;
+  js.name = "zero";
+  auto st = r.session->begin_job(js);
+  ASSERT_FALSE(st);
+  EXPECT_EQ(st.error().code, ErrorCode::kInvalidArgument);
+  EXPECT_NE(st.error().message.find("job id 0"), std::string::npos) << st.error().message;
+  js.job_id = 1;
+  EXPECT_TRUE(r.session->begin_job(js)) << "a numbered job still opens";
+}
+
 TEST(PrintSession, RefusesThePrintsimPrinterOutsidePrintsim) {
   if (std::getenv("TP_PRINTSIM")) GTEST_SKIP() << "running under printsim";
   PrinterConfig cfg;
