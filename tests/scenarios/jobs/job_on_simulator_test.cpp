@@ -105,8 +105,11 @@ TEST(JobOnSimulator, AJobThatCannotBeMadeFailsBeforeAnythingIsPrinted) {
   EXPECT_EQ(rep["state"], "failed");
   EXPECT_EQ(rep.value("error", "").rfind("design: ", 0), 0u) << rep.dump();
   for (const json& s : rep.value("stages", json::array())) {
-    if (s["stage"] == "design") EXPECT_EQ(s["state"], "failed");
-    if (s["stage"] == "print") EXPECT_NE(s["state"], "done");
+    if (s["stage"] == "design") {
+      EXPECT_EQ(s["state"], "failed");
+    } else if (s["stage"] == "print") {
+      EXPECT_NE(s["state"], "done");
+    }
   }
   EXPECT_FALSE(rep.contains("print"));
   EXPECT_FALSE(fs::exists(out / "fabric.png"));
