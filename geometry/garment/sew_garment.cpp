@@ -160,8 +160,25 @@ Result<Garment> sew_garment(const Pattern& pattern, const PatternMesh& meshes, c
   internal::ClothMesh& merged = mc.cloth;
   st.collapsed_triangles = mc.collapsed;
 
+  // Seam segments keep their pattern length once sewn (the stitching does not stretch): each
+  // consecutive pair of seam vertices becomes a rest-length edge, its length the mean of the two
+  // pieces' 2D lengths.
+  for (size_t s = 0; s < pattern.stitches.size(); ++s) {
+    const auto& pairs = meshes.stitch_vertices[s];
+    const int pa = pattern.stitches[s].a.piece, pb = pattern.stitches[s].b.piece;
+    for (size_t k = 0; k + 1 < pairs.size(); ++k) {
+      const int i = mc.merged_id[pairs[k][0] + offset[pa]], j = mc.merged_id[pairs[k + 1][0] + offset[pa]];
+      if (i == j) continue;
+      const double la = norm(meshes.pieces[pa].vertices_mm[pairs[k + 1][0]] - meshes.pieces[pa].vertices_mm[pairs[k][0]]);
+      const double lb = norm(meshes.pieces[pb].vertices_mm[pairs[k + 1][1]] - meshes.pieces[pb].vertices_mm[pairs[k][1]]);
+      merged.edges.push_back({i, j});
+      merged.edge_rest_mm.push_back(0.5 * (la + lb));
+    }
+  }
+
   // Phase B: relax the sewn garment under gravity until it settles.
   params.spring_weight = 0;
+  params.edge_weight = options.seam_edge_weight;
   params.gravity_per_mm = options.gravity_per_mm;
   params.tolerance_mm = options.tolerance_mm;
   // Accelerated first; plain local-global at the end, which settles contact monotonically.

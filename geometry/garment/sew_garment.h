@@ -22,6 +22,9 @@ struct SewOptions {
   /// slides a garment down the body until it is stretched over it: 0 keeps the placement's height.
   double gravity_per_mm = 0;
   double tolerance_mm = 0.003;       ///< phase B stops when no vertex moves further per iteration
+  /// Phase B: stiffness of the sewn seams' segments against their pattern length, relative to
+  /// the membrane (0: seams stretch like the fabric around them).
+  double seam_edge_weight = 50;
   int threads = 2;
 };
 

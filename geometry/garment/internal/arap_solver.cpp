@@ -141,6 +141,14 @@ Result<ClothStats> relax_cloth(ClothMesh& cloth, const BodySdf& body, const Clot
     trip.emplace_back(s[0], s[1], -p.spring_weight);
     trip.emplace_back(s[1], s[0], -p.spring_weight);
   }
+  const bool use_edges = p.edge_weight > 0 && !cloth.edges.empty() && cloth.edge_rest_mm.size() == cloth.edges.size();
+  if (use_edges)
+    for (const auto& e : cloth.edges) {
+      trip.emplace_back(e[0], e[0], p.edge_weight);
+      trip.emplace_back(e[1], e[1], p.edge_weight);
+      trip.emplace_back(e[0], e[1], -p.edge_weight);
+      trip.emplace_back(e[1], e[0], -p.edge_weight);
+    }
   for (int i = 0; i < n; ++i) trip.emplace_back(i, i, w[i]);
   Eigen::SparseMatrix<double> K(n, n);
   K.setFromTriplets(trip.begin(), trip.end());
@@ -184,6 +192,20 @@ Result<ClothStats> relax_cloth(ClothMesh& cloth, const BodySdf& body, const Clot
     });
     double e = 0;
     for (int t = 0; t < threads; ++t) e += energy_part[t];
+    // Rest-length edges: each projected onto its rest length along its current direction.
+    if (use_edges) {
+      Eigen::MatrixXd& r = rhs_part[0];
+      for (size_t k = 0; k < cloth.edges.size(); ++k) {
+        const int i = cloth.edges[k][0], j = cloth.edges[k][1];
+        const Vec3 d = x[i] - x[j];
+        const double len = norm(d);
+        const Vec3 proj = len > 0 ? d * (cloth.edge_rest_mm[k] / len) : d;
+        e += p.edge_weight * dot(d - proj, d - proj);
+        const Vec3 v = proj * p.edge_weight;
+        r(i, 0) += v.x, r(i, 1) += v.y, r(i, 2) += v.z;
+        r(j, 0) -= v.x, r(j, 1) -= v.y, r(j, 2) -= v.z;
+      }
+    }
     return e;
   };
 

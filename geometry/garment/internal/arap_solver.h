@@ -18,11 +18,15 @@ struct ClothMesh {
   std::vector<std::array<int, 3>> triangles;    ///< #F indices into x_mm
   std::vector<std::array<Vec2, 3>> rest_mm;     ///< #F rest (pattern) positions of the corners
   std::vector<std::array<int, 2>> springs;      ///< vertex pairs drawn together (phase A seams)
+  /// Edges held to a rest length (sewn seam segments: the stitching keeps the seam's length).
+  std::vector<std::array<int, 2>> edges;
+  std::vector<double> edge_rest_mm;             ///< #edges rest lengths
 };
 
 /// Weights and limits of one relaxation run. Weights are relative to the membrane stiffness.
 struct ClothParams {
   double spring_weight = 0;        ///< seam spring stiffness (0: no springs)
+  double edge_weight = 0;          ///< stiffness of the rest-length edges (0: edges ignored)
   double proximal_weight = 0.02;   ///< pull towards the previous iterate (damping), per vertex area / h^2
   double gravity_per_mm = 0;    ///< body force per unit area, relative to membrane stiffness (-y)
   double clearance_mm = 3;         ///< vertices are pushed at least this far out of the body
@@ -39,7 +43,7 @@ struct ClothStats {
   int contacts = 0;  ///< vertices pushed out of the body in the last iteration
 };
 
-/// Minimises sum_t A_t |F_t - R_t|^2 + springs + gravity by local-global iterations (the
+/// Minimises sum_t A_t |F_t - R_t|^2 + springs + edges + gravity by local-global iterations (the
 /// system matrix is factorised once), projecting any vertex closer than clearance to the body
 /// back out after every global step, so the result never ends inside the body.
 /// Fails with kSewing if the system cannot be factorised, kCancelled when `cancel` fires.
