@@ -2,8 +2,10 @@
 #include <cstdio>
 
 #include "host/app/printctl/commands.h"
+#include "rip/common/memory.h"
 
 int main(int argc, char** argv) {
+  tp::rip::keep_memory_flat();  // peak memory must not grow with roll length
   CLI::App app{"printctl: garment print controller command line"};
   app.require_subcommand(1);
   app.fallthrough();

@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "host/daemon/daemon.h"
+#include "rip/common/memory.h"
 
 namespace {
 std::atomic<bool> g_stop{false};
@@ -14,6 +15,7 @@ void on_signal(int) { g_stop.store(true); }
 }  // namespace
 
 int main(int argc, char** argv) {
+  tp::rip::keep_memory_flat();  // peak memory must not grow with roll length
   CLI::App app{"printd: garment print daemon (hot folder, local socket, SQLite job queue)"};
   tp::host::DaemonConfig cfg;
   std::string state_dir = "/var/lib/printd", hot, out = "/var/lib/printd/out", socket;
