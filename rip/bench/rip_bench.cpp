@@ -147,6 +147,7 @@ Status rip_ghostscript_image(const RipBenchOptions& o, const std::filesystem::pa
   const auto t0 = Clock::now();
   auto img = read_image(dir / "image.jpg");
   if (!img) return std::unexpected(img.error());
+  emit("rip_1bit_read_seconds", num(std::chrono::duration<double>(Clock::now() - t0).count(), 2));
   const ImageSource src(*img);
   device::PrinterModel printer;
   printer.bits_per_pixel = 1;
@@ -158,6 +159,8 @@ Status rip_ghostscript_image(const RipBenchOptions& o, const std::filesystem::pa
   if (!st) return std::unexpected(st.error());
   emit("rip_1bit_seconds", num(std::chrono::duration<double>(Clock::now() - t0).count(), 2));
   emit("rip_1bit_area_m2", num(st->area_m2, 4));
+  emit("rip_1bit_rip_seconds", num(st->wall_s, 2));
+  emit("rip_1bit_separations_seconds", num(st->separations_s, 2));
   return {};
 }
 
