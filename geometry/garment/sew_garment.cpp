@@ -162,17 +162,25 @@ Result<Garment> sew_garment(const Pattern& pattern, const PatternMesh& meshes, c
 
   // Seam segments keep their pattern length once sewn (the stitching does not stretch): each
   // consecutive pair of seam vertices becomes a rest-length edge, its length the mean of the two
-  // pieces' 2D lengths.
+  // pieces' 2D lengths. Eased or gathered seams (the two sides' lengths differ by more than
+  // kEasedSeam) have no single rest length and are left to the membrane.
+  constexpr double kEasedSeam = 0.01;
   for (size_t s = 0; s < pattern.stitches.size(); ++s) {
     const auto& pairs = meshes.stitch_vertices[s];
     const int pa = pattern.stitches[s].a.piece, pb = pattern.stitches[s].b.piece;
+    std::vector<double> la(pairs.size(), 0), lb(pairs.size(), 0);
+    double total_a = 0, total_b = 0;
+    for (size_t k = 0; k + 1 < pairs.size(); ++k) {
+      la[k] = norm(meshes.pieces[pa].vertices_mm[pairs[k + 1][0]] - meshes.pieces[pa].vertices_mm[pairs[k][0]]);
+      lb[k] = norm(meshes.pieces[pb].vertices_mm[pairs[k + 1][1]] - meshes.pieces[pb].vertices_mm[pairs[k][1]]);
+      total_a += la[k], total_b += lb[k];
+    }
+    if (std::abs(total_a - total_b) > kEasedSeam * std::max(total_a, total_b)) continue;
     for (size_t k = 0; k + 1 < pairs.size(); ++k) {
       const int i = mc.merged_id[pairs[k][0] + offset[pa]], j = mc.merged_id[pairs[k + 1][0] + offset[pa]];
       if (i == j) continue;
-      const double la = norm(meshes.pieces[pa].vertices_mm[pairs[k + 1][0]] - meshes.pieces[pa].vertices_mm[pairs[k][0]]);
-      const double lb = norm(meshes.pieces[pb].vertices_mm[pairs[k + 1][1]] - meshes.pieces[pb].vertices_mm[pairs[k][1]]);
       merged.edges.push_back({i, j});
-      merged.edge_rest_mm.push_back(0.5 * (la + lb));
+      merged.edge_rest_mm.push_back(0.5 * (la[k] + lb[k]));
     }
   }
 
