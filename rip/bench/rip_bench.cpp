@@ -26,7 +26,6 @@ namespace tp::rip {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-constexpr double kMmPerInch = 25.4;
 constexpr int kReplayTiles = 48;   ///< render tiles rendered once for the after-rendering run
 constexpr double kSecondsPerHour = 3600;
 

@@ -101,7 +101,6 @@ class Separator {
   void move_items(Worker& w, const SampleConfig& samples, const Budget& budget);
   void move_items_multi(Layout& master, const SampleConfig& samples, const Budget& budget);
 
-  const NestContext* ctx_;
   ThreadTeam* team_;
   std::vector<Worker> workers_;
   QueryScratch scratch_;

@@ -152,8 +152,10 @@ TEST(StripNester, FreeRotationAndMirrorsAreUsedOnlyWhenAllowed) {
   auto s = nest_strip(p, quick(100));
   ASSERT_TRUE(s) << s.error().what();
   expect_valid(p, *s);
-  for (const StripPlacement& pl : s->placements)
-    if (pl.item == 1) EXPECT_EQ(pl.rotation_deg, 90.0);
+  for (const StripPlacement& pl : s->placements) {
+    if (pl.item != 1) continue;
+    EXPECT_EQ(pl.rotation_deg, 90.0);
+  }
 }
 
 TEST(StripNester, LengthLimitLeavesWhatDoesNotFit) {

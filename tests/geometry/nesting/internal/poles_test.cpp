@@ -18,7 +18,9 @@ TEST(ShapePrep, PolesAreInsideDisjointAndLargestFirst) {
   for (size_t i = 0; i < poles.size(); ++i) {
     EXPECT_TRUE(point_in_polygon(base, poles[i].c));
     EXPECT_GE(distance_to_boundary(base, poles[i].c), poles[i].r * (1 - 1e-9));
-    if (i) EXPECT_LE(poles[i].r, poles[i - 1].r * (1 + 1e-9));
+    if (i > 0) {
+      EXPECT_LE(poles[i].r, poles[i - 1].r * (1 + 1e-9));
+    }
     for (size_t j = 0; j < i; ++j) EXPECT_GE(norm(poles[i].c - poles[j].c), (poles[i].r + poles[j].r) * (1 - 1e-9));
   }
   // The largest circle sits in the corner, touching both outer sides and the inner corner.
