@@ -78,15 +78,6 @@ std::vector<std::vector<Vec2>> place_text(const std::string& text, double h, con
   return lines;
 }
 
-bool inside(const Polygon& poly, Vec2 p) {
-  bool in = false;
-  for (size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++)
-    if ((poly[i].y > p.y) != (poly[j].y > p.y) &&
-        p.x < (poly[j].x - poly[i].x) * (p.y - poly[i].y) / (poly[j].y - poly[i].y) + poly[i].x)
-      in = !in;
-  return in;
-}
-
 double distance_to(const Polygon& poly, Vec2 p) {
   double best = 1e300;
   for (size_t i = 0; i < poly.size(); ++i) {
@@ -105,7 +96,7 @@ bool fits(const std::vector<std::vector<Vec2>>& lines, const Polygon& seam, bool
   for (const auto& l : lines)
     for (size_t i = 0; i < l.size(); ++i)
       for (Vec2 p : {l[i], i + 1 < l.size() ? (l[i] + l[i + 1]) * 0.5 : l[i]}) {
-        if (inside(seam, p) == outside) return false;
+        if (point_in_polygon(seam, p) == outside) return false;
         const double d = distance_to(seam, p);
         if (d < min_mm || d > max_mm) return false;
       }

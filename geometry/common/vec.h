@@ -91,6 +91,16 @@ inline double signed_area(const Polygon& poly) {
   return 0.5 * s;
 }
 
+/// Whether p lies inside the polygon (even-odd crossing rule; points on an edge may go either way).
+inline bool point_in_polygon(const Polygon& poly, Vec2 p) {
+  bool inside = false;
+  for (size_t i = 0, n = poly.size(), j = n - 1; i < n; j = i++) {
+    const Vec2 a = poly[i], b = poly[j];
+    if ((a.y > p.y) != (b.y > p.y) && p.x < (b.x - a.x) * (p.y - a.y) / (b.y - a.y) + a.x) inside = !inside;
+  }
+  return inside;
+}
+
 /// Axis-aligned box; empty when min > max.
 struct Box2 {
   Vec2 min{1e300, 1e300}, max{-1e300, -1e300};

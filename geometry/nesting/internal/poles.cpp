@@ -30,15 +30,6 @@ constexpr int kMaxCellsPerCircle = 40000;
 
 }  // namespace
 
-bool point_in_polygon(const Polygon& poly, Vec2 p) {
-  bool inside = false;
-  for (size_t i = 0, n = poly.size(), j = n - 1; i < n; j = i++) {
-    const Vec2 a = poly[i], b = poly[j];
-    if ((a.y > p.y) != (b.y > p.y) && p.x < (b.x - a.x) * (p.y - a.y) / (b.y - a.y) + a.x) inside = !inside;
-  }
-  return inside;
-}
-
 double distance_to_boundary(const Polygon& poly, Vec2 p) {
   double best = 1e300;
   for (size_t i = 0, n = poly.size(); i < n; ++i) {

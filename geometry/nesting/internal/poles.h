@@ -29,9 +29,6 @@ struct PoleLimits {
 /// Poles of `ccw`, largest first (the first is the pole of inaccessibility).
 [[nodiscard]] std::vector<Circle> compute_poles(const Polygon& ccw, const PoleLimits& limits = {});
 
-/// True when `p` lies strictly inside the simple polygon `poly` (even-odd rule).
-[[nodiscard]] bool point_in_polygon(const Polygon& poly, Vec2 p);
-
 /// Distance from `p` to the nearest edge of `poly`.
 [[nodiscard]] double distance_to_boundary(const Polygon& poly, Vec2 p);
 

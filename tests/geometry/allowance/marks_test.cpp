@@ -41,20 +41,12 @@ TEST(PieceMarks, LabelAndGrainArrowLieInTheAllowance) {
   auto cut = cut_outline(pc, *a, f.mitre_limit);
   ASSERT_TRUE(cut);
   const Polygon seam = outline(pc);
-  auto inside = [](const Polygon& poly, Vec2 p) {
-    bool in = false;
-    for (size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++)
-      if ((poly[i].y > p.y) != (poly[j].y > p.y) &&
-          p.x < (poly[j].x - poly[i].x) * (p.y - poly[i].y) / (poly[j].y - poly[i].y) + poly[i].x)
-        in = !in;
-    return in;
-  };
   // Every stroke point is outside the seam line and inside the cut line: hidden once sewn.
   for (const auto* set : {&m.label, &m.grain_arrow})
     for (const auto& line : *set)
       for (Vec2 p : line) {
-        EXPECT_FALSE(inside(seam, p)) << p.x << "," << p.y;
-        EXPECT_TRUE(inside(*cut, p)) << p.x << "," << p.y;
+        EXPECT_FALSE(point_in_polygon(seam, p)) << p.x << "," << p.y;
+        EXPECT_TRUE(point_in_polygon(*cut, p)) << p.x << "," << p.y;
       }
   // The arrow's shaft runs along the grain line.
   const Vec2 shaft = m.grain_arrow[0][1] - m.grain_arrow[0][0];
