@@ -12,6 +12,7 @@
 
 #include "rip/colour/internal/lcms_handles.h"
 #include "rip/common/internal/log.h"
+#include "rip/image/internal/preflight.h"
 
 namespace tp::rip {
 
@@ -23,8 +24,11 @@ namespace {
 /// Widest image accepted (a 1.7 m roll at 15 000 dpi): a guard against hostile headers.
 constexpr int kMaxWidthPx = 1 << 20;
 
-/// Rows decoded per chunk: bounds the temporary 16-bit/float buffers whatever the image height.
-constexpr int kChunkRows = 64;
+/// Decoded bytes per chunk of rows: bounds the temporary 16-bit/float buffers whatever the image
+/// height, while narrow images still decode in few calls (each call costs a decoder seek and setup).
+constexpr std::size_t kChunkBytes = std::size_t{8} << 20;
+/// Widest decoded row accepted (2^20 pixels of 16 float channels): a guard against hostile headers.
+constexpr std::size_t kMaxRowBytes = std::size_t{64} << 20;
 
 enum class ColourModel { kGrey, kRgb, kCmyk };
 
@@ -181,6 +185,7 @@ struct ScanlineReader::Impl {
   bool fast8 = false;   ///< 8-bit file decoded byte-wide
   bool use_float = false;
   int next_row = 0;
+  int chunk_rows = 1;  ///< rows decoded per call
   std::vector<std::uint8_t> raw8, colour8, rgb8;
   std::vector<std::uint16_t> raw16, colour16, alpha16;
   std::vector<float> rawf;
@@ -258,10 +263,27 @@ Result<std::unique_ptr<ScanlineReader>> ScanlineReader::open(const std::string& 
   config.attribute("oiio:UnassociatedAlpha", 1);
   // OIIO 2.4 readers look for the proxy in the configuration hints as well as in the argument.
   if (proxy) config.attribute("oiio:ioproxy", OIIO::TypeDesc::PTR, &proxy);
-  m->in = OIIO::ImageInput::open(name, &config, proxy);
+  // The container is checked first and the reader chosen by content, so OpenImageIO never falls
+  // back to trying its other format plugins on a file its own reader refused (see preflight.h).
+  Result<ImageFormat> format = [&]() -> Result<ImageFormat> {
+    if (proxy) return preflight_image(name, *proxy);
+    OIIO::Filesystem::IOFile file(name, OIIO::Filesystem::IOProxy::Read);
+    if (!file.opened()) return fail(ErrorCode::kImage, name + ": cannot open image file");
+    return preflight_image(name, file);
+  }();
+  if (!format) return std::unexpected(format.error());
+  m->in = OIIO::ImageInput::create(oiio_format_name(*format), false, &config, proxy);
+  if (m->in && proxy && !m->in->set_ioproxy(proxy)) m->in.reset();
   if (!m->in) {
     std::string why = OIIO::geterror();
-    return fail(ErrorCode::kImage, fmt::format("{}: cannot open image: {}", name, why.empty() ? "unknown format" : why));
+    return fail(ErrorCode::kImage, fmt::format("{}: no {} reader: {}", name, oiio_format_name(*format), why));
+  }
+  OIIO::ImageSpec opened;
+  if (!m->in->open(name, opened, config)) {
+    std::string why = m->in->geterror();
+    if (why.empty()) why = OIIO::geterror();
+    m->in.reset();
+    return fail(ErrorCode::kImage, fmt::format("{}: cannot open image: {}", name, why.empty() ? "corrupt file" : why));
   }
   m->spec = m->in->spec();
   const OIIO::ImageSpec& spec = m->spec;
@@ -296,7 +318,12 @@ Result<std::unique_ptr<ScanlineReader>> ScanlineReader::open(const std::string& 
       if (!m->transform) return fail(ErrorCode::kImage, name + ": embedded ICC profile cannot convert to sRGB");
     }
   }
-  const size_t chunk_px = static_cast<size_t>(spec.width) * kChunkRows;
+  const std::size_t row_bytes = static_cast<std::size_t>(spec.width) * spec.nchannels * (m->use_float ? 4 : 2);
+  if (row_bytes > kMaxRowBytes)
+    return fail(ErrorCode::kImage, fmt::format("{}: a row of {} pixels x {} channels exceeds {} MiB decoded", name,
+                                               spec.width, spec.nchannels, kMaxRowBytes >> 20));
+  m->chunk_rows = static_cast<int>(std::clamp<std::size_t>(kChunkBytes / row_bytes, 1, spec.height));
+  const size_t chunk_px = static_cast<size_t>(spec.width) * m->chunk_rows;
   const int nc = colour_channels(m->lay.model);
   if (m->fast8) {
     m->raw8.resize(chunk_px * spec.nchannels);
@@ -323,7 +350,7 @@ Status ScanlineReader::read_rows(int rows, Rgba8* out, std::ptrdiff_t stride_px)
   const int nch = spec.nchannels, w = spec.width;
   // Decode a chunk of rows at a time so temporary buffers stay small whatever the image height.
   for (int done = 0; done < rows;) {
-    const int n = std::min(kChunkRows, rows - done);
+    const int n = std::min(m.chunk_rows, rows - done);
     const int y0 = m.next_row;
     const OIIO::TypeDesc type = m.fast8 ? OIIO::TypeDesc::UINT8 : m.use_float ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT16;
     void* raw = m.fast8 ? static_cast<void*>(m.raw8.data()) : m.use_float ? static_cast<void*>(m.rawf.data())

@@ -113,6 +113,7 @@ Result<RipStats> run_rip(const BandSource& source, const device::PrinterModel& p
       return fail(ErrorCode::kCancelled, fmt::format("RIP cancelled at fabric row {} of {}", y0, height));
     const int rows = static_cast<int>(std::min<std::int64_t>(settings.band_rows, height - y0));
     stage.run(pool, y0, rows);
+    if (auto s = source.status(); !s) return fail(s.error().with_context(fmt::format("RIP at fabric row {}", y0)));
     if (separations) {
       auto t0 = Clock::now();
       auto s = separations->write_band(pool, stage, window, y0, rows);

@@ -6,6 +6,7 @@
 #include <cstdint>
 
 #include "geometry/common/image.h"
+#include "rip/common/error.h"
 
 namespace tp::rip {
 
@@ -21,6 +22,9 @@ class BandSource {
   /// rows = kRenderTileRows (fewer at the end), so a source's output never depends on how a job
   /// splits the roll into bands or threads.
   virtual void render_rows(std::int64_t y0, int rows, geometry::Rgba8* out, std::ptrdiff_t stride_px) const = 0;
+  /// A source that reads as it goes (a file decoded while the RIP runs) reports here what went
+  /// wrong; run_rip checks it after every band and stops the job with that error.
+  [[nodiscard]] virtual Status status() const { return {}; }
 };
 
 /// Rows per render call: the granularity of work shared between threads.
