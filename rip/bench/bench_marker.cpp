@@ -11,6 +11,8 @@
 #include "geometry/allowance/finishing.h"
 #include "geometry/design/make_piece_renderer.h"
 #include "geometry/design/sample_designs.h"
+#include "geometry/garment/flat_garment.h"
+#include "geometry/mesh/mesh_pattern.h"
 #include "geometry/nesting/nest_pieces.h"
 #include "geometry/samples/garments.h"
 
@@ -92,6 +94,80 @@ Result<BenchJob> make_garment_bench_job(double width_mm, int threads) {
                                 (*renderer)->piece_count(), job.block.length_mm, job.block.utilisation * 100);
   job.renderer = std::move(*renderer);
   job.keep_alive = garment;
+  return job;
+}
+
+Result<BenchJob> make_panel_bench_job(double width_mm, int threads) {
+  // Four panels sewn side by side into one wide cloth, each cut exactly a quarter of the roll
+  // width with 10 mm allowance all round, 1 m of seam line long.
+  constexpr int kPanels = 4;
+  constexpr double kAllowanceMm = 10, kSeamLengthMm = 1000;
+  const double cut_w = width_mm / kPanels, w = cut_w - 2 * kAllowanceMm;
+  if (w <= 50) return fail(ErrorCode::kInvalidArgument, fmt::format("bench panels: roll {} mm is too narrow", width_mm));
+  geometry::Pattern pattern;
+  pattern.name = "bench_panels";
+  pattern.size = "one";
+  auto edge = [](const char* name, geometry::Vec2 a, geometry::Vec2 b) {
+    geometry::Edge e;
+    e.name = name;
+    e.control_mm = {a, b};
+    e.points_mm = {a, b};
+    return e;
+  };
+  for (int k = 0; k < kPanels; ++k) {
+    geometry::Piece piece;
+    piece.name = fmt::format("panel_{}", k + 1);
+    piece.edges = {edge("bottom", {0, 0}, {w, 0}), edge("side_right", {w, 0}, {w, kSeamLengthMm}),
+                   edge("top", {w, kSeamLengthMm}, {0, kSeamLengthMm}), edge("side_left", {0, kSeamLengthMm}, {0, 0})};
+    piece.grain = geometry::GrainLine{{w / 2, 100}, {w / 2, kSeamLengthMm - 100}};
+    pattern.pieces.push_back(std::move(piece));
+  }
+  for (int k = 0; k + 1 < kPanels; ++k)
+    pattern.stitches.push_back({{k, 1, 0, -1}, {k + 1, 3, 0, -1}, false});
+  geometry::TriangulateOptions mesh_opt;
+  mesh_opt.target_edge_mm = 20;
+  auto meshes = geometry::mesh_pattern(pattern, mesh_opt);
+  if (!meshes) return fail(ErrorCode::kGeometry, "bench panels: " + meshes.error().what());
+  auto garment = geometry::flat_garment(pattern, *meshes);
+  if (!garment) return fail(ErrorCode::kGeometry, "bench panels: " + garment.error().what());
+  auto keep = std::make_shared<std::pair<geometry::Pattern, geometry::Garment>>(std::move(pattern), std::move(*garment));
+
+  // The design, made in the layout's plane: the bench image projected flat and repeated every
+  // 320 mm, and a large planar motif (the same image turned) over the middle panels.
+  geometry::Design design;
+  geometry::PlanarProjection ground;
+  ground.image = bench_design_texture();
+  ground.centre_mm = {width_mm / 2, kSeamLengthMm / 2, 0};
+  ground.width_mm = 320;
+  ground.repeat = true;
+  design.layers.push_back({"ground", 1.0, ground});
+  geometry::PlanarProjection motif = ground;
+  motif.up = {0.5, 0.866, 0};
+  motif.width_mm = 700;
+  motif.repeat = false;
+  design.layers.push_back({"motif", 0.6, motif});
+
+  geometry::Finishing finishing;
+  finishing.seam_allowance_mm = finishing.hem_allowance_mm = finishing.edge_allowance_mm = kAllowanceMm;
+  finishing.reflect_hem_corners = false;
+  finishing.marks = geometry::MarkMode::kNone;
+  geometry::RenderOptions options;
+  options.build_threads = std::max(1, threads);
+  auto renderer = geometry::make_piece_renderer(keep->first, keep->second, design, finishing, options);
+  if (!renderer) return fail(ErrorCode::kGeometry, "bench panels: " + renderer.error().what());
+
+  BenchJob job;
+  job.block.width_mm = width_mm;
+  job.block.length_mm = kSeamLengthMm + 2 * kAllowanceMm;
+  for (int k = 0; k < kPanels; ++k)
+    job.block.placements.push_back({k, 0, false, {k * cut_w + kAllowanceMm, kAllowanceMm}});
+  double cut_area = 0;
+  for (int k = 0; k < kPanels; ++k) cut_area += std::abs(geometry::signed_area((*renderer)->cut_outline_mm(k)));
+  job.block.utilisation = cut_area / (job.block.width_mm * job.block.length_mm);
+  job.description = "panels (design renderer: flat planar projections, textured allowance across seams; 4 panels "
+                    "sewn side by side, cut edge to edge: full coverage)";
+  job.renderer = std::move(*renderer);
+  job.keep_alive = keep;
   return job;
 }
 

@@ -1,5 +1,5 @@
-// rip/bench/bench_marker.h: the RIP benchmark's job: a roll fully covered by textured pieces, and a
-// replay source that isolates the pipeline after rendering.
+// rip/bench/bench_marker.h: the RIP benchmark's jobs (panels covering the roll, the nested skirt,
+// stand-in rectangles) and a replay source that isolates the pipeline after rendering.
 #pragma once
 
 #include <memory>
@@ -37,6 +37,12 @@ BenchJob make_textured_bench_job(double width_mm);
 /// allowance; one garment's pieces nested on the roll width (grain both ways, 2 mm gaps, 5 s of
 /// search). Fails with the geometry layer's error.
 [[nodiscard]] Result<BenchJob> make_garment_bench_job(double width_mm, int threads);
+
+/// Full coverage through the real design renderer: four panels sewn side by side (a flat job, no
+/// body), each cut a quarter of the roll width, carrying a planar projection repeated over the
+/// cloth and a planar motif at 60 % opacity, with textured 10 mm allowance across the seams and
+/// mirrored at the edges; placed edge to edge. Fails with the geometry layer's error.
+[[nodiscard]] Result<BenchJob> make_panel_bench_job(double width_mm, int threads);
 
 /// `block` repeated down a marker `length_mm` long; the last copy is cut by the marker's end.
 geometry::Marker repeat_block(const geometry::Marker& block, double length_mm);

@@ -175,11 +175,13 @@ Status run_rip_bench(const RipBenchOptions& o, const FigureSink& emit) {
     return fail(ErrorCode::kInvalidArgument, fmt::format("bench: width {} m (up to 1.65) and length {} m must be positive",
                                                          o.width_m, o.length_m));
   // The job is built once, before any child is forked: children share it copy-on-write.
+  const int build_threads = o.threads > 0 ? o.threads : 2;
   Result<BenchJob> job = o.renderer == "textured" ? Result<BenchJob>(make_textured_bench_job(o.width_m * 1000))
-                         : o.renderer == "garment"
-                             ? make_garment_bench_job(o.width_m * 1000, o.threads > 0 ? o.threads : 2)
-                             : Result<BenchJob>(fail(ErrorCode::kInvalidArgument, "bench: renderer '" + o.renderer +
-                                                                                      "' is not garment or textured"));
+                         : o.renderer == "garment" ? make_garment_bench_job(o.width_m * 1000, build_threads)
+                         : o.renderer == "panels"
+                             ? make_panel_bench_job(o.width_m * 1000, build_threads)
+                             : Result<BenchJob>(fail(ErrorCode::kInvalidArgument,
+                                                     "bench: renderer '" + o.renderer + "' is not garment, panels or textured"));
   if (!job) return std::unexpected(job.error());
   emit("renderer", job->description);
   emit("coverage", num(job->block.utilisation, 3));

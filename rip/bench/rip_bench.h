@@ -15,8 +15,9 @@ struct RipBenchOptions {
   double width_m = 1.6;
   double length_m = 1.0;                   ///< roll length of the throughput runs
   /// "garment": the sample skirt's projected design through the design renderer, nested;
+  /// "panels": planar projections on sewn flat panels covering the roll, through the same renderer;
   /// "textured": the stand-in renderer over full-coverage textured rectangles.
-  std::string renderer = "garment";
+  std::string renderer = "panels";
   int passes = 1;
   int threads = 0;                         ///< 0: all cores
   bool vs_ghostscript = false;

@@ -40,8 +40,9 @@ void register_bench_rip(CLI::App& bench) {
   cmd->add_option("--width-m", opts->width_m, "Fabric width, metres")->capture_default_str();
   cmd->add_option("--passes", opts->passes, "Print passes (1, 2, 4, 8)")->capture_default_str();
   cmd->add_option("--renderer", opts->renderer,
-                  "garment: the sample skirt's projected design, nested; textured: stand-in rectangles")
-      ->check(CLI::IsMember({"garment", "textured"}))
+                  "garment: the sample skirt's projected design, nested; panels: projected design on panels "
+                  "covering the roll; textured: stand-in rectangles")
+      ->check(CLI::IsMember({"garment", "panels", "textured"}))
       ->capture_default_str();
   cmd->add_option("--threads", opts->threads, "Worker threads (0: all cores)")->capture_default_str();
   cmd->add_option("--rss-lengths", *rss, "Roll lengths (m) whose peak memory is measured, comma-separated")
