@@ -204,6 +204,9 @@ Result<Job> parse_job(const std::string& text, const JobPackage* pkg) {
     doc = nlohmann::json::parse(text);
   } catch (const nlohmann::json::parse_error& e) {
     return fail(ErrorCode::kValidation, std::string("job.json: not valid JSON: ") + e.what());
+  } catch (const nlohmann::json::exception& e) {
+    // A number too large for a double (out_of_range.406) and the like: still the file's fault.
+    return fail(ErrorCode::kValidation, std::string("job.json: not valid JSON: ") + e.what());
   }
   Problems problems("job.json");
   if (!doc.is_object()) return fail(ErrorCode::kValidation, "job.json: /: expected a JSON object");

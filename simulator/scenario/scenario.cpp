@@ -47,6 +47,9 @@ Result<Scenario> parse_scenario(std::string_view text, std::string_view source) 
     j = nlohmann::json::parse(text);
   } catch (const nlohmann::json::parse_error& e) {
     return fail(ErrorCode::kScenario, src + ": not valid JSON: " + e.what());
+  } catch (const nlohmann::json::exception& e) {
+    // Numbers too large for a double (out_of_range.406) and the like.
+    return fail(ErrorCode::kScenario, src + ": not valid JSON: " + e.what());
   }
   auto bad = [&](const std::string& pointer, const std::string& why) {
     return fail(ErrorCode::kScenario, src + ": " + pointer + ": " + why);

@@ -127,6 +127,11 @@ TEST_F(ManifestTest, BrokenJsonIsReported) {
   auto job = load(R"({"format": "tp-job/1", )");
   ASSERT_FALSE(job);
   EXPECT_NE(job.error().message.find("job.json: not valid JSON"), std::string::npos);
+  // A number too large for a double is refused, not thrown past the parser (found by the fuzzer).
+  auto huge = load(R"({"format": "tp-job/1", "name": 4444444444444444444444e444444})");
+  ASSERT_FALSE(huge);
+  EXPECT_NE(huge.error().message.find("job.json: not valid JSON"), std::string::npos) << huge.error().message;
+  EXPECT_NE(huge.error().message.find("number overflow"), std::string::npos) << huge.error().message;
 }
 
 TEST_F(ManifestTest, BadStrokePointNamesElement) {

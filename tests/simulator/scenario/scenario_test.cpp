@@ -48,6 +48,7 @@ TEST(Scenario, ErrorsNameTheFileAndThePointer) {
       {R"({"fault": []})", "/fault: unknown key"},
       {R"({"faults": [{"type": "corrupt_crc", "at_frame": 0}]})", "frames are numbered from 1"},
       {"{not json", "jam.json: not valid JSON"},
+      {R"({"faults": [{"type": "stall", "at_swath": 1e999}]})", "jam.json: not valid JSON"},
   };
   for (const auto& c : cases) {
     auto s = parse_scenario(c.json, "jam.json");
