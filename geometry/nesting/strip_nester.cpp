@@ -187,7 +187,7 @@ Result<StripSolution> nest_strip(const StripProblem& problem, const StripOptions
   const bool any_placed = static_cast<int>(unplaced.size()) < layout.size();
   if (options.improve && any_placed && layout.size() > 1) {
     ThreadTeam team(options.threads);
-    Separator sep(&ctx, options.workers, &team);
+    Separator sep(options.workers, &team);
     StripSearchConfig cfg;
     if (getenv("TP_XS")) cfg.explore_shrink = atof(getenv("TP_XS"));  // TUNING-HACK
     if (getenv("TP_CS0")) cfg.compress_shrink_start = atof(getenv("TP_CS0"));  // TUNING-HACK

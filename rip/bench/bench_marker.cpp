@@ -14,6 +14,7 @@
 #include "geometry/garment/flat_garment.h"
 #include "geometry/mesh/mesh_pattern.h"
 #include "geometry/nesting/nest_pieces.h"
+#include "geometry/pattern/curve.h"
 #include "geometry/samples/garments.h"
 
 namespace tp::rip {
@@ -107,18 +108,13 @@ Result<BenchJob> make_panel_bench_job(double width_mm, int threads) {
   geometry::Pattern pattern;
   pattern.name = "bench_panels";
   pattern.size = "one";
-  auto edge = [](const char* name, geometry::Vec2 a, geometry::Vec2 b) {
-    geometry::Edge e;
-    e.name = name;
-    e.control_mm = {a, b};
-    e.points_mm = {a, b};
-    return e;
-  };
+  using geometry::make_line_edge;
   for (int k = 0; k < kPanels; ++k) {
     geometry::Piece piece;
     piece.name = fmt::format("panel_{}", k + 1);
-    piece.edges = {edge("bottom", {0, 0}, {w, 0}), edge("side_right", {w, 0}, {w, kSeamLengthMm}),
-                   edge("top", {w, kSeamLengthMm}, {0, kSeamLengthMm}), edge("side_left", {0, kSeamLengthMm}, {0, 0})};
+    piece.edges = {make_line_edge("bottom", {0, 0}, {w, 0}), make_line_edge("side_right", {w, 0}, {w, kSeamLengthMm}),
+                   make_line_edge("top", {w, kSeamLengthMm}, {0, kSeamLengthMm}),
+                   make_line_edge("side_left", {0, kSeamLengthMm}, {0, 0})};
     piece.grain = geometry::GrainLine{{w / 2, 100}, {w / 2, kSeamLengthMm - 100}};
     pattern.pieces.push_back(std::move(piece));
   }

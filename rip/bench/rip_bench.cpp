@@ -162,6 +162,16 @@ Status rip_ghostscript_image(const RipBenchOptions& o, const std::filesystem::pa
   return {};
 }
 
+/// The job of `o.renderer` across the roll width.
+Result<BenchJob> make_bench_job(const RipBenchOptions& o) {
+  const double width_mm = o.width_m * 1000;
+  const int build_threads = o.threads > 0 ? o.threads : 2;
+  if (o.renderer == "panels") return make_panel_bench_job(width_mm, build_threads);
+  if (o.renderer == "garment") return make_garment_bench_job(width_mm, build_threads);
+  if (o.renderer == "textured") return make_textured_bench_job(width_mm);
+  return fail(ErrorCode::kInvalidArgument, "bench: renderer '" + o.renderer + "' is not panels, garment or textured");
+}
+
 double figure(const ChildRun& run, const std::string& key) {
   for (const auto& [k, v] : run.figures)
     if (k == key) return std::stod(v);
@@ -175,13 +185,7 @@ Status run_rip_bench(const RipBenchOptions& o, const FigureSink& emit) {
     return fail(ErrorCode::kInvalidArgument, fmt::format("bench: width {} m (up to 1.65) and length {} m must be positive",
                                                          o.width_m, o.length_m));
   // The job is built once, before any child is forked: children share it copy-on-write.
-  const int build_threads = o.threads > 0 ? o.threads : 2;
-  Result<BenchJob> job = o.renderer == "textured" ? Result<BenchJob>(make_textured_bench_job(o.width_m * 1000))
-                         : o.renderer == "garment" ? make_garment_bench_job(o.width_m * 1000, build_threads)
-                         : o.renderer == "panels"
-                             ? make_panel_bench_job(o.width_m * 1000, build_threads)
-                             : Result<BenchJob>(fail(ErrorCode::kInvalidArgument,
-                                                     "bench: renderer '" + o.renderer + "' is not garment, panels or textured"));
+  Result<BenchJob> job = make_bench_job(o);
   if (!job) return std::unexpected(job.error());
   emit("renderer", job->description);
   emit("coverage", num(job->block.utilisation, 3));

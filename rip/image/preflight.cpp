@@ -196,10 +196,14 @@ Status check_jpeg(OIIO::Filesystem::IOProxy& io) {
     if (!read_at(io, pos, lb, 2)) return jpeg_cut_short();
     const std::size_t len = std::size_t{lb[0]} << 8 | lb[1];
     if (len < 2) return {};
-    if (marker == 0xed) {
-      // Photoshop resources: "Photoshop 3.0", NUL, "8BIM", type 1028 (IPTC), name, size, IIM data.
-      std::vector<std::uint8_t> seg(len - 2);
+    // APP13 (Photoshop resources) and APP2 (ICC profile) are what OpenImageIO parses itself.
+    std::vector<std::uint8_t> seg;
+    if (marker == 0xed || marker == 0xe2) {
+      seg.resize(len - 2);
       if (!read_at(io, pos + 2, seg.data(), seg.size())) return jpeg_cut_short();
+    }
+    if (marker == 0xed) {
+      // "Photoshop 3.0", NUL, "8BIM", type 1028 (IPTC), name, size, IIM data.
       constexpr char kPs[] = "Photoshop 3.0";
       if (seg.size() >= sizeof kPs && !std::memcmp(seg.data(), kPs, sizeof kPs)) {
         if (seg.size() < 26) return fail(ErrorCode::kImage, "APP13 Photoshop segment is too short for a resource");
@@ -211,8 +215,6 @@ Status check_jpeg(OIIO::Filesystem::IOProxy& io) {
       }
     }
     if (marker == 0xe2) {
-      std::vector<std::uint8_t> seg(len - 2);
-      if (!read_at(io, pos + 2, seg.data(), seg.size())) return jpeg_cut_short();
       // Decoders compare the segment with "ICC_PROFILE" as a C string: it must hold a NUL.
       if (std::find(seg.begin(), seg.end(), std::uint8_t{0}) == seg.end())
         return fail(ErrorCode::kImage, "APP2 segment is not NUL-terminated");

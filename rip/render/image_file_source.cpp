@@ -14,6 +14,7 @@
 
 #include "rip/image/image_io.h"
 #include "rip/image/internal/scanline_reader.h"
+#include "rip/render/image_source.h"
 
 namespace tp::rip {
 
@@ -28,7 +29,8 @@ struct ImageFileSource::Impl {
   std::string name;
   int width = 0;
   std::int64_t height = 0;
-  std::optional<geometry::ImageRgba8> whole;  ///< oriented images only
+  geometry::ImageRgba8 whole;                 ///< oriented images only, served by `in_memory`
+  std::unique_ptr<ImageSource> in_memory;
 
   std::unique_ptr<ScanlineReader> reader;
   int window = 0;               ///< ring capacity in rows
@@ -102,6 +104,7 @@ Result<std::unique_ptr<ImageFileSource>> ImageFileSource::open(const std::filesy
     m->width = img->width_px;
     m->height = img->height_px;
     m->whole = std::move(*img);
+    m->in_memory = std::make_unique<ImageSource>(m->whole);
     return std::unique_ptr<ImageFileSource>(new ImageFileSource(std::move(m)));
   }
   m->reader = std::move(*reader);
@@ -119,14 +122,9 @@ std::int64_t ImageFileSource::height_px() const { return impl_->height; }
 
 void ImageFileSource::render_rows(std::int64_t y0, int rows, Rgba8* out, std::ptrdiff_t stride_px) const {
   Impl& m = *impl_;
+  if (m.in_memory) return m.in_memory->render_rows(y0, rows, out, stride_px);
   rows = static_cast<int>(std::clamp<std::int64_t>(m.height - y0, 0, rows));
   if (rows == 0) return;
-  if (m.whole) {
-    for (int r = 0; r < rows; ++r)
-      std::memcpy(static_cast<void*>(out + r * stride_px), &m.whole->at(0, static_cast<int>(y0 + r)),
-                  sizeof(Rgba8) * static_cast<std::size_t>(m.width));
-    return;
-  }
   {
     std::unique_lock lock(m.mu);
     if (y0 < m.released || y0 + rows - m.released > m.window) {

@@ -104,7 +104,7 @@ SearchSpace search_space(const Layout& layout, int k) {
   return s;
 }
 
-Separator::Separator(const NestContext* /*ctx*/, int workers, ThreadTeam* team) : team_(team) {
+Separator::Separator(int workers, ThreadTeam* team) : team_(team) {
   workers_.resize(std::max(1, workers));
 }
 

@@ -79,7 +79,7 @@ struct SeparatorConfig {
 /// Moves colliding copies until none collide.
 class Separator {
  public:
-  Separator(const NestContext* ctx, int workers, ThreadTeam* team);
+  Separator(int workers, ThreadTeam* team);
 
   /// New worker random streams derived from `rng` (after the strip length changes).
   void reseed(Rng& rng);

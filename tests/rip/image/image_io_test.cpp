@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 #include <lcms2.h>
 
+#include "tests/support/image_files.h"
 #include "tests/support/paths.h"
 
 namespace tp::rip {
@@ -17,15 +18,6 @@ namespace {
 namespace OIIO = OIIO_NAMESPACE;
 using geometry::ImageRgba8;
 using geometry::Rgba8;
-
-/// Writes raw samples with OIIO so each test controls exactly what is in the file.
-void write_raw(const std::filesystem::path& path, OIIO::ImageSpec spec, const void* data) {
-  auto out = OIIO::ImageOutput::create(path.string());
-  ASSERT_TRUE(out);
-  ASSERT_TRUE(out->open(path.string(), spec)) << out->geterror();
-  ASSERT_TRUE(out->write_image(spec.format, data)) << out->geterror();
-  ASSERT_TRUE(out->close());
-}
 
 /// An Adobe-RGB-like wide-gamut profile built with lcms2 (no system profile files needed).
 std::vector<std::uint8_t> wide_gamut_profile() {
@@ -102,7 +94,7 @@ TEST(ImageIo, RgbPngIsCompositedOverWhiteFabric) {
 TEST(ImageIo, GreyAndSixteenBitAreExpandedAndRounded) {
   auto dir = test::scratch_dir("image_io_grey16");
   std::uint16_t grey[4] = {0, 257 * 100, 257 * 100 + 128, 65535};  // 100.498 rounds to 100
-  write_raw(dir / "g.png", OIIO::ImageSpec(4, 1, 1, OIIO::TypeDesc::UINT16), grey);
+  test::write_raw_image(dir / "g.png", OIIO::ImageSpec(4, 1, 1, OIIO::TypeDesc::UINT16), grey);
   auto back = read_image(dir / "g.png");
   ASSERT_TRUE(back) << back.error().what();
   EXPECT_EQ(back->at(0, 0), (Rgba8{0, 0, 0, 255}));
@@ -117,7 +109,7 @@ TEST(ImageIo, EmbeddedProfileIsConvertedToSrgb) {
   std::uint8_t px[3 * 3] = {40, 160, 90, 128, 128, 128, 200, 30, 30};
   OIIO::ImageSpec spec(3, 1, 3, OIIO::TypeDesc::UINT8);
   spec.attribute("ICCProfile", OIIO::TypeDesc(OIIO::TypeDesc::UINT8, profile.size()), profile.data());
-  write_raw(dir / "wide.tif", spec, px);
+  test::write_raw_image(dir / "wide.tif", spec, px);
   auto back = read_image(dir / "wide.tif");
   ASSERT_TRUE(back) << back.error().what();
   for (int i = 0; i < 3; ++i) {
@@ -138,7 +130,7 @@ TEST(ImageIo, UnreadableEmbeddedProfileIsRefusedNamingTheFile) {
   std::vector<std::uint8_t> junk(200, 0x41);
   OIIO::ImageSpec spec(1, 1, 3, OIIO::TypeDesc::UINT8);
   spec.attribute("ICCProfile", OIIO::TypeDesc(OIIO::TypeDesc::UINT8, junk.size()), junk.data());
-  write_raw(dir / "junk.tif", spec, px);
+  test::write_raw_image(dir / "junk.tif", spec, px);
   auto r = read_image(dir / "junk.tif");
   ASSERT_FALSE(r);
   EXPECT_EQ(r.error().code, ErrorCode::kImage);
@@ -151,7 +143,7 @@ TEST(ImageIo, LinearPremultipliedFloatIsEncodedAndUnpremultiplied) {
   // Premultiplied linear 0.1070 at alpha 0.5 is straight linear 0.2140 = sRGB 128.
   float px[2 * 4] = {0.1070f, 0.1070f, 0.1070f, 0.5f, 1.0f, 0.0f, 0.0f, 1.0f};
   OIIO::ImageSpec spec(2, 1, 4, OIIO::TypeDesc::FLOAT);
-  write_raw(dir / "lin.exr", spec, px);
+  test::write_raw_image(dir / "lin.exr", spec, px);
   auto back = read_image(dir / "lin.exr");
   ASSERT_TRUE(back) << back.error().what();
   EXPECT_NEAR(back->at(0, 0).r, 128, 1);
@@ -162,11 +154,7 @@ TEST(ImageIo, LinearPremultipliedFloatIsEncodedAndUnpremultiplied) {
 TEST(ImageIo, ExifOrientationTurnsTheImageUpright) {
   auto dir = test::scratch_dir("image_io_orient");
   // Stored 3 wide, 2 high; orientation 6 means "rotate 90 degrees clockwise to display".
-  std::uint8_t px[6 * 3];
-  for (int i = 0; i < 6; ++i) px[3 * i] = px[3 * i + 1] = px[3 * i + 2] = static_cast<std::uint8_t>(10 * i);
-  OIIO::ImageSpec spec(3, 2, 3, OIIO::TypeDesc::UINT8);
-  spec.attribute("Orientation", 6);
-  write_raw(dir / "o.tif", spec, px);
+  test::write_oriented_tiff(dir / "o.tif");
   auto back = read_image(dir / "o.tif");
   ASSERT_TRUE(back);
   ASSERT_EQ(back->width_px, 2);

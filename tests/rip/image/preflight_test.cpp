@@ -13,6 +13,7 @@
 #include <zlib.h>
 
 #include "rip/image/image_io.h"
+#include "tests/support/image_files.h"
 #include "tests/support/paths.h"
 
 namespace tp::rip {
@@ -71,14 +72,6 @@ Bytes read_file(const std::filesystem::path& p) {
   return Bytes((std::istreambuf_iterator<char>(f)), {});
 }
 
-void write_raw(const std::filesystem::path& path, OIIO::ImageSpec spec, const void* data) {
-  auto out = OIIO::ImageOutput::create(path.string());
-  ASSERT_TRUE(out);
-  ASSERT_TRUE(out->open(path.string(), spec)) << out->geterror();
-  ASSERT_TRUE(out->write_image(spec.format, data)) << out->geterror();
-  ASSERT_TRUE(out->close());
-}
-
 /// A 4x2 RGB8 file in the format of `name`'s extension, optionally with an embedded profile.
 Bytes small_image(const std::string& name, const Bytes& icc = {}) {
   auto dir = test::scratch_dir("preflight_src");
@@ -86,7 +79,7 @@ Bytes small_image(const std::string& name, const Bytes& icc = {}) {
   for (int i = 0; i < 24; ++i) px[i] = static_cast<std::uint8_t>(i * 10);
   OIIO::ImageSpec spec(4, 2, 3, OIIO::TypeDesc::UINT8);
   if (!icc.empty()) spec.attribute("ICCProfile", OIIO::TypeDesc(OIIO::TypeDesc::UINT8, icc.size()), icc.data());
-  write_raw(dir / name, spec, px);
+  test::write_raw_image(dir / name, spec, px);
   return read_file(dir / name);
 }
 
@@ -275,7 +268,7 @@ TEST(Preflight, JpegCutShortIsRefusedAndProgressiveJpegIsRead) {
   for (int i = 0; i < 64 * 64 * 3; ++i) px[i] = static_cast<std::uint8_t>(i * 7);
   OIIO::ImageSpec spec(64, 64, 3, OIIO::TypeDesc::UINT8);
   spec.attribute("jpeg:progressive", 1);
-  write_raw(dir / "p.jpg", spec, px);
+  test::write_raw_image(dir / "p.jpg", spec, px);
   Bytes prog = read_file(dir / "p.jpg");
   int scans = 0;
   for (std::size_t i = 0; i + 1 < prog.size(); ++i) scans += prog[i] == 0xff && prog[i + 1] == 0xda;

@@ -5,12 +5,12 @@
 #include <fstream>
 #include <thread>
 
-#include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
 
 #include "rip/image/image_io.h"
 #include "rip/job/rip_job.h"
 #include "rip/render/image_source.h"
+#include "tests/support/image_files.h"
 #include "tests/support/paths.h"
 
 namespace tp::rip {
@@ -123,12 +123,7 @@ TEST(ImageFileSource, ARequestBeyondTheWindowFailsInsteadOfWaiting) {
 
 TEST(ImageFileSource, AnOrientedImageIsTurnedUpright) {
   auto dir = test::scratch_dir("image_file_source_orient");
-  std::uint8_t px[6 * 3];
-  for (int i = 0; i < 6; ++i) px[3 * i] = px[3 * i + 1] = px[3 * i + 2] = static_cast<std::uint8_t>(10 * i);
-  OIIO_NAMESPACE::ImageSpec spec(3, 2, 3, OIIO_NAMESPACE::TypeDesc::UINT8);
-  spec.attribute("Orientation", 6);
-  auto out = OIIO_NAMESPACE::ImageOutput::create((dir / "o.tif").string());
-  ASSERT_TRUE(out && out->open((dir / "o.tif").string(), spec) && out->write_image(spec.format, px) && out->close());
+  test::write_oriented_tiff(dir / "o.tif");
   auto src = ImageFileSource::open(dir / "o.tif", 32);
   ASSERT_TRUE(src) << src.error().what();
   ASSERT_EQ((*src)->width_px(), 2);
