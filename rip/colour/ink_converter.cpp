@@ -4,6 +4,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <thread>
+
+#include <sys/mman.h>
 
 #include <lcms2.h>
 #include <spdlog/fmt/fmt.h>
@@ -25,6 +28,30 @@ constexpr int kMinGrid = 9, kMaxGrid = 65;
 constexpr int kFracOne = 256;         ///< interpolation weights sum to this
 constexpr int kNodeScale = 128;       ///< node values are 8-bit ink amounts times this (fits int16)
 constexpr int kLane = 4;              ///< inks per 64-bit group of int16 node values
+
+/// 2^24 packed entries in memory of their own, backed by huge pages where the kernel allows: a
+/// pixel's lookup is one load, and neighbouring colours share pages.
+class DirectTable {
+ public:
+  static constexpr size_t kEntries = size_t{1} << 24;
+  DirectTable() = default;
+  DirectTable(const DirectTable&) = delete;
+  DirectTable& operator=(const DirectTable&) = delete;
+  ~DirectTable() {
+    if (data_) munmap(data_, kEntries * sizeof(std::uint32_t));
+  }
+  bool allocate() {
+    void* p = mmap(nullptr, kEntries * sizeof(std::uint32_t), PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+    if (p == MAP_FAILED) return false;
+    madvise(p, kEntries * sizeof(std::uint32_t), MADV_HUGEPAGE);  // advice only: fine if refused
+    data_ = static_cast<std::uint32_t*>(p);
+    return true;
+  }
+  std::uint32_t* data() const { return data_; }
+
+ private:
+  std::uint32_t* data_ = nullptr;
+};
 
 /// Where one 8-bit input value falls on a grid axis.
 struct AxisStep {
@@ -63,12 +90,66 @@ struct InkConverter::Table {
   std::array<Tetra, 8> tetra{};
   std::array<AxisStep, 256> axis_r{}, axis_g{}, axis_b{};
   std::uint32_t stride_r = 0, stride_g = 0, stride_b = 0;
+  /// Up to four inks: every 8-bit sRGB colour's interpolated inks, packed one per byte (empty
+  /// unless InkConverterSettings::direct_table). Colours are stored in 4x4x4 blocks, at
+  /// direct_r[r] + direct_g[g] + direct_b[b], so that the nearby colours of a smooth image share
+  /// cache lines and pages.
+  DirectTable direct;
+  std::array<std::uint32_t, 256> direct_r{}, direct_g{}, direct_b{};
   // Kept for convert_exact: the same separation at full precision.
   lcms::Profile profile;
   lcms::Transform exact;  ///< sRGB double -> inks double (0..1), unoptimised
   std::vector<ToneCurve> curves;
   std::vector<bool> black;
   double limit_fraction = 0;  ///< sum of ink fractions allowed at nodes (includes rounding margin)
+
+#if defined(__SSE2__)
+  /// Tetrahedral interpolation of one colour when lanes == kLane: the inks packed one per byte.
+  std::uint32_t interpolate4(std::uint8_t r, std::uint8_t g, std::uint8_t b) const {
+    const AxisStep ar = axis_r[r], ag = axis_g[g], ab = axis_b[b];
+    const std::int16_t* c0 = nodes.data() + ar.offset + ag.offset + ab.offset;
+    const std::uint32_t fr = ar.frac, fg = ag.frac, fb = ab.frac;
+    const Tetra& tt = tetra[(fr >= fg) | ((fg >= fb) << 1) | ((fr >= fb) << 2)];
+    const std::uint32_t f1 = std::max(fr, std::max(fg, fb)), f3 = std::min(fr, std::min(fg, fb));
+    const std::uint32_t f2 = fr + fg + fb - f1 - f3;
+    // madd multiplies (corner, weight) int16 pairs and adds each pair.
+    const __m128i wa = _mm_set1_epi32(static_cast<int>((kFracOne - f1) | ((f1 - f2) << 16)));
+    const __m128i wb = _mm_set1_epi32(static_cast<int>((f2 - f3) | (f3 << 16)));
+    const __m128i a0 = _mm_loadl_epi64(reinterpret_cast<const __m128i*>(c0));
+    const __m128i a1 = _mm_loadl_epi64(reinterpret_cast<const __m128i*>(c0 + tt.d1));
+    const __m128i a2 = _mm_loadl_epi64(reinterpret_cast<const __m128i*>(c0 + tt.d2));
+    const __m128i a3 = _mm_loadl_epi64(reinterpret_cast<const __m128i*>(c0 + stride_r + stride_g + stride_b));
+    __m128i acc = _mm_add_epi32(_mm_madd_epi16(_mm_unpacklo_epi16(a0, a1), wa),
+                                _mm_madd_epi16(_mm_unpacklo_epi16(a2, a3), wb));
+    acc = _mm_srli_epi32(_mm_add_epi32(acc, _mm_set1_epi32(kFracOne * kNodeScale / 2)), 15);
+    const __m128i v16 = _mm_packs_epi32(acc, acc);
+    return static_cast<std::uint32_t>(_mm_cvtsi128_si32(_mm_packus_epi16(v16, v16)));
+  }
+
+  /// Fills `direct` with every colour's interpolation, on `threads` threads.
+  bool build_direct(int threads) {
+    if (!direct.allocate()) return false;
+    for (std::uint32_t x = 0; x < 256; ++x) {
+      direct_r[x] = (x >> 2) << 6 | (x & 3);
+      direct_g[x] = (x >> 2) << 12 | (x & 3) << 2;
+      direct_b[x] = (x >> 2) << 18 | (x & 3) << 4;
+    }
+    std::uint32_t* out = direct.data();
+    auto fill = [this, out](int b0, int b1) {
+      for (int b = b0; b < b1; ++b)
+        for (int g = 0; g < 256; ++g)
+          for (int r = 0; r < 256; ++r)
+            out[direct_r[r] + direct_g[g] + direct_b[b]] =
+                interpolate4(static_cast<std::uint8_t>(r), static_cast<std::uint8_t>(g), static_cast<std::uint8_t>(b));
+    };
+    threads = std::clamp(threads, 1, 16);
+    std::vector<std::thread> pool;
+    for (int k = 1; k < threads; ++k) pool.emplace_back(fill, 256 * k / threads, 256 * (k + 1) / threads);
+    fill(0, 256 / threads);
+    for (auto& th : pool) th.join();
+    return true;
+  }
+#endif
 
   /// Linearisation then the ink limit, on fractions 0..1.
   void finish_inks(double* ink) const {
@@ -213,6 +294,11 @@ Result<InkConverter> InkConverter::create(const InkConverterSettings& s) {
               Table::Tetra{R, R + B},  // 5: r >= b > g
               Table::Tetra{G, G + R},  // 6: g > r >= b
               rgb_order}};                      // 7: r >= g >= b
+#if defined(__SSE2__)
+  if (s.direct_table && t->lanes == kLane &&
+      !t->build_direct(static_cast<int>(std::max(1u, std::thread::hardware_concurrency()))))
+    logger().warn("{}: no memory for the direct colour table; interpolating per pixel", pname);
+#endif
   logger().debug("{}: {}^3 ink table for {} inks, limit {} (8-bit units)", pname, g, nc, t->limit_8bit);
   return InkConverter(std::move(t));
 }
@@ -240,46 +326,69 @@ bool InkConverter::convert_row(const geometry::Rgba8* in, int n, std::uint8_t* c
     // block is split into planes and scaled by coverage.
     constexpr int kBlock = 256;
     alignas(16) std::uint32_t packed[kBlock];
-    const __m128i half = _mm_set1_epi32(kFracOne * kNodeScale / 2);
+    const std::uint32_t* direct = t.direct.data();
     std::uint32_t ink4 = 0;
     for (int i0 = 0; i0 < n; i0 += kBlock) {
       const int m = std::min(kBlock, n - i0);
       bool block_any = false;
-      for (int j = 0; j < m; ++j) {
-        const geometry::Rgba8 p = in[i0 + j];
-        const std::uint32_t key = p.r | (p.g << 8) | (p.b << 16);
-        block_any |= p.a != 0;
-        if (key != last_rgb) {
-          last_rgb = key;
-          const AxisStep ar = t.axis_r[p.r], ag = t.axis_g[p.g], ab = t.axis_b[p.b];
-          const std::int16_t* c0 = nodes + ar.offset + ag.offset + ab.offset;
-          const std::uint32_t fr = ar.frac, fg = ag.frac, fb = ab.frac;
-          const Table::Tetra& tt = t.tetra[(fr >= fg) | ((fg >= fb) << 1) | ((fr >= fb) << 2)];
-          const std::uint32_t f1 = std::max(fr, std::max(fg, fb)), f3 = std::min(fr, std::min(fg, fb));
-          const std::uint32_t f2 = fr + fg + fb - f1 - f3;
-          const __m128i wa = _mm_set1_epi32(static_cast<int>((kFracOne - f1) | ((f1 - f2) << 16)));
-          const __m128i wb = _mm_set1_epi32(static_cast<int>((f2 - f3) | (f3 << 16)));
-          const __m128i a0 = _mm_loadl_epi64(reinterpret_cast<const __m128i*>(c0));
-          const __m128i a1 = _mm_loadl_epi64(reinterpret_cast<const __m128i*>(c0 + tt.d1));
-          const __m128i a2 = _mm_loadl_epi64(reinterpret_cast<const __m128i*>(c0 + tt.d2));
-          const __m128i a3 = _mm_loadl_epi64(reinterpret_cast<const __m128i*>(c0 + far));
-          __m128i acc = _mm_add_epi32(_mm_madd_epi16(_mm_unpacklo_epi16(a0, a1), wa),
-                                      _mm_madd_epi16(_mm_unpacklo_epi16(a2, a3), wb));
-          acc = _mm_srli_epi32(_mm_add_epi32(acc, half), 15);
-          const __m128i v16 = _mm_packs_epi32(acc, acc);
-          ink4 = static_cast<std::uint32_t>(_mm_cvtsi128_si32(_mm_packus_epi16(v16, v16)));
+      if (direct) {
+        for (int j = 0; j < m; ++j) {
+          const geometry::Rgba8 p = in[i0 + j];
+          block_any |= p.a != 0;
+          packed[j] = direct[t.direct_r[p.r] + t.direct_g[p.g] + t.direct_b[p.b]];
         }
-        packed[j] = ink4;
+      } else {
+        for (int j = 0; j < m; ++j) {
+          const geometry::Rgba8 p = in[i0 + j];
+          const std::uint32_t key = p.r | (p.g << 8) | (p.b << 16);
+          block_any |= p.a != 0;
+          if (key != last_rgb) {
+            last_rgb = key;
+            ink4 = t.interpolate4(p.r, p.g, p.b);
+          }
+          packed[j] = ink4;
+        }
       }
       any |= block_any;
-      for (int j = 0; j < m; ++j) {
-        const std::uint32_t a = in[i0 + j].a;
-        // Coverage scales every ink by a/255 rounding down (a = 255 keeps them, a = 0 clears them),
-        // so scaled inks never exceed the limit.
-        const std::uint32_t scale = a == 255 ? 65536u : a * 257u + 1u - (a == 0);
-        const std::uint32_t v = packed[j];
-        for (int c = 0; c < nc; ++c) plane[c][i0 + j] = static_cast<std::uint8_t>((((v >> (8 * c)) & 0xffu) * scale) >> 16);
+      // Coverage scales every ink by a/255 rounding down (a = 255 keeps them, a = 0 clears them),
+      // so scaled inks never exceed the limit.
+      auto split = [&](int j0, int j1) {
+        for (int j = j0; j < j1; ++j) {
+          const std::uint32_t a = in[i0 + j].a;
+          const std::uint32_t scale = a == 255 ? 65536u : a * 257u + 1u - (a == 0);
+          const std::uint32_t v = packed[j];
+          for (int c = 0; c < nc; ++c) plane[c][i0 + j] = static_cast<std::uint8_t>((((v >> (8 * c)) & 0xffu) * scale) >> 16);
+        }
+      };
+      int j0 = 0;
+      if (nc == kLane) {
+        // Sixteen opaque pixels at a time: the packed inks transposed into the four planes.
+        const __m128i amask = _mm_set1_epi32(static_cast<int>(0xff000000u));
+        for (; j0 + 16 <= m; j0 += 16) {
+          const auto* px = reinterpret_cast<const __m128i*>(in + i0 + j0);
+          const __m128i opaque = _mm_and_si128(_mm_and_si128(_mm_loadu_si128(px), _mm_loadu_si128(px + 1)),
+                                               _mm_and_si128(_mm_loadu_si128(px + 2), _mm_loadu_si128(px + 3)));
+          if (_mm_movemask_epi8(_mm_cmpeq_epi32(_mm_and_si128(opaque, amask), amask)) != 0xffff) {
+            split(j0, j0 + 16);
+            continue;
+          }
+          const auto* pk = reinterpret_cast<const __m128i*>(packed + j0);
+          const __m128i a = _mm_load_si128(pk), b = _mm_load_si128(pk + 1);
+          const __m128i c = _mm_load_si128(pk + 2), d = _mm_load_si128(pk + 3);
+          // Bytes (ink, pixel): three rounds of interleaving turn pixel-major into ink-major.
+          const __m128i t0 = _mm_unpacklo_epi8(a, b), t1 = _mm_unpackhi_epi8(a, b);
+          const __m128i t2 = _mm_unpacklo_epi8(c, d), t3 = _mm_unpackhi_epi8(c, d);
+          const __m128i u0 = _mm_unpacklo_epi8(t0, t1), u1 = _mm_unpackhi_epi8(t0, t1);
+          const __m128i u2 = _mm_unpacklo_epi8(t2, t3), u3 = _mm_unpackhi_epi8(t2, t3);
+          const __m128i v0 = _mm_unpacklo_epi8(u0, u1), v1 = _mm_unpackhi_epi8(u0, u1);
+          const __m128i w0 = _mm_unpacklo_epi8(u2, u3), w1 = _mm_unpackhi_epi8(u2, u3);
+          _mm_storeu_si128(reinterpret_cast<__m128i*>(plane[0] + i0 + j0), _mm_unpacklo_epi64(v0, w0));
+          _mm_storeu_si128(reinterpret_cast<__m128i*>(plane[1] + i0 + j0), _mm_unpackhi_epi64(v0, w0));
+          _mm_storeu_si128(reinterpret_cast<__m128i*>(plane[2] + i0 + j0), _mm_unpacklo_epi64(v1, w1));
+          _mm_storeu_si128(reinterpret_cast<__m128i*>(plane[3] + i0 + j0), _mm_unpackhi_epi64(v1, w1));
+        }
       }
+      split(j0, m);
     }
     return any;
   }

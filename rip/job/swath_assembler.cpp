@@ -121,9 +121,10 @@ Status SwathAssembler::emit_ready(std::int64_t rows_done, ThreadPool& pool, cons
     pool.parallel_for(nc, [&](int c, int worker) { build_channel(pr, first, row_bytes, c, worker); });
     size_t total = 0;
     for (size_t len : channel_len_) total += len;
-    swath.data.resize(total);
-    for (size_t c = 0, at = 0; c < channel_out_.size(); at += channel_len_[c], ++c)
-      std::memcpy(swath.data.data() + at, channel_out_[c].data(), channel_len_[c]);
+    // Appended, not resized and copied over: no zero fill of tens of megabytes.
+    swath.data.reserve(total);
+    for (size_t c = 0; c < channel_out_.size(); ++c)
+      swath.data.insert(swath.data.end(), channel_out_[c].begin(), channel_out_[c].begin() + static_cast<std::ptrdiff_t>(channel_len_[c]));
     stats.raw_bytes += h.raw_bytes;
     stats.compressed_bytes += swath.data.size();
     ++stats.swaths_sent;

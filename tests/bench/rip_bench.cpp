@@ -1,5 +1,5 @@
 // tests/bench/rip_bench.cpp: micro-benchmarks of the RIP's hot loops (per row of a 1.6 m wide roll at
-// 600 dpi): colour tables, screening, PackBits, the stand-in renderer. Figures in pixels per second.
+// 600 dpi): colour tables, screening, PackBits, the stand-in and design renderers. Figures in pixels per second.
 #include <benchmark/benchmark.h>
 
 #include <random>
@@ -87,6 +87,27 @@ void BM_RenderTile(benchmark::State& state) {
   state.SetItemsProcessed(state.iterations() * kRowPx * kRenderTileRows);
 }
 BENCHMARK(BM_RenderTile);
+
+/// The design renderer on the full-coverage panels (two planar projections, one repeated, one a
+/// rotated motif at 60 % opacity): one tile of the roll width per iteration.
+void BM_RenderPanelTile(benchmark::State& state) {
+  auto job = make_panel_bench_job(1600, 1);
+  if (!job) {
+    state.SkipWithError(job.error().message.c_str());
+    return;
+  }
+  auto src = MarkerSource::create(job->block, *job->renderer, 600, 600);
+  std::vector<geometry::Rgba8> px(static_cast<size_t>(kRowPx) * kRenderTileRows);
+  std::int64_t y = 0;
+  for (auto _ : state) {
+    std::fill(px.begin(), px.end(), geometry::Rgba8{});
+    (*src)->render_rows(y, kRenderTileRows, px.data(), kRowPx);
+    y = (y + 7 * kRenderTileRows) % 23000;
+    benchmark::DoNotOptimize(px.data());
+  }
+  state.SetItemsProcessed(state.iterations() * kRowPx * kRenderTileRows);
+}
+BENCHMARK(BM_RenderPanelTile)->Unit(benchmark::kMillisecond);
 
 /// ctest's smoke run: cheap, checks the executable links and runs.
 void BM_Smoke(benchmark::State& state) {

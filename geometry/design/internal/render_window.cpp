@@ -80,13 +80,15 @@ thread_local Scratch g_scratch;
 thread_local std::vector<const OutlineEdge*> g_active;
 thread_local std::vector<const StrokeSegment*> g_near_segments;
 thread_local std::vector<std::uint32_t> g_live_tris;
+thread_local std::vector<std::pair<int, int>> g_touched;
 
 EdgePx make_edge(Vec2 a, Vec2 b) {
   if (a.y > b.y || (a.y == b.y && a.x > b.x)) std::swap(a, b);
   return {a.x, a.y, b.y, (b.x - a.x) / (b.y - a.y)};
 }
 
-// Adds the signed area one outline edge covers in row `row` of the accumulation buffer.
+// Adds the signed area one outline edge covers in row `row` of the accumulation buffer; the cells
+// it touched are [touched0, touched1) (unchanged when it touched none).
 void accumulate(float* acc, int width, const OutlineEdge& e, int row, int& touched0, int& touched1) {
   const double ya = std::max(e.y0, static_cast<double>(row)), yb = std::min(e.y1, static_cast<double>(row + 1));
   if (ya >= yb) return;
@@ -98,8 +100,8 @@ void accumulate(float* acc, int width, const OutlineEdge& e, int row, int& touch
   xb = std::clamp(xb, 0.0, static_cast<double>(width));
   const double d = e.dir * (yb - ya);
   const int c0 = static_cast<int>(xa), c1 = std::min(static_cast<int>(xb), width);
-  touched0 = std::min(touched0, c0);
-  touched1 = std::max(touched1, c1 + 1);
+  touched0 = c0;
+  touched1 = c1 + 2;
   if (xb - xa < 1e-9) {
     // The coverage to the right of a piece at x within cell c: (c + 1 - x) here, the rest next.
     const double f = xa - c0;
@@ -138,14 +140,29 @@ bool span(const TriSetup& t, double yc, int& i0, int& i1) {
   return i1 > i0;
 }
 
+// Samples one layer over the span's pixels [i0, i0 + n). Only dst[k0, k1) is written; every
+// other pixel of the span is transparent in this layer.
 void sample_entry(const EntrySetup& es, const LayerRuntime& L, int i0, int n, int j, double pixel_mm,
-                  const PieceData& piece, std::uint32_t* dst) {
+                  const PieceData& piece, std::uint32_t* dst, int& k0, int& k1) {
+  k0 = 0, k1 = n;
   if (L.kind == LayerRuntime::Kind::kTexture) {
-    sample_span(*L.texture->image, es.filter, es.u.at(i0, j), es.v.at(i0, j), es.u.dx, es.v.dx, n, dst);
+    const MipImage& image = *L.texture->image;
+    const double u0 = es.u.at(i0, j), v0 = es.v.at(i0, j);
+    covered_range(image, es.filter, u0, v0, es.u.dx, es.v.dx, n, k0, k1);
+    if (k0 >= k1) return;
+    sample_span(image, es.filter, u0 + es.u.dx * k0, v0 + es.v.dx * k0, es.u.dx, es.v.dx, k1 - k0, dst + k0);
     const bool unit = (es.layer->flags & TriLayer::kUnitWeight) && L.opacity >= 1.0;
     const bool depth = es.layer->flags & TriLayer::kDepthTest;
     if (unit && !depth) return;
-    for (int k = 0; k < n; ++k) {
+    if (!depth && es.w.dx == 0) {
+      // One weight along the row (a flat panel, or a layer faded only across rows).
+      const double w = std::clamp(es.w.at(i0, j), 0.0, 1.0) * L.opacity;
+      const auto f = static_cast<std::uint32_t>(w * 256.0 + 0.5);
+      if (f < 256)
+        for (int k = k0; k < k1; ++k) dst[k] = scale_texel(dst[k], f);
+      return;
+    }
+    for (int k = k0; k < k1; ++k) {
       double w = std::clamp(es.w.at(i0 + k, j), 0.0, 1.0) * L.opacity;
       if (depth) {
         const Vec3 p3{es.x3.at(i0 + k, j), es.y3.at(i0 + k, j), es.z3.at(i0 + k, j)};
@@ -359,20 +376,40 @@ void render_window(const PieceData& piece, const std::vector<LayerRuntime>& laye
     while (next_edge < s.edges.size() && s.edges[next_edge].y0 < j + 1) active.push_back(&s.edges[next_edge++]);
     active.erase(std::remove_if(active.begin(), active.end(), [j](const OutlineEdge* e) { return e->y1 <= j; }), active.end());
     int t0 = W + 2, t1 = -1;
-    for (const OutlineEdge* e : active) accumulate(s.acc.data(), W, *e, j, t0, t1);
-    if (t0 > t1) continue;
-    // Prefix sums give each pixel's coverage; cells at or past W only affect pixels outside.
-    const int last = std::min(t1, W - 1);
-    double run = 0;
-    for (int i = t0; i <= last; ++i) {
-      run += s.acc[static_cast<size_t>(i)];
-      s.acc[static_cast<size_t>(i)] = 0;
-      s.cov[static_cast<size_t>(i)] = static_cast<std::uint8_t>(std::min(1.0, std::abs(run)) * 255.0 + 0.5);
+    std::vector<std::pair<int, int>>& touched = g_touched;
+    touched.clear();
+    for (const OutlineEdge* e : active) {
+      int lo = 0, hi = 0;
+      accumulate(s.acc.data(), W, *e, j, lo, hi);
+      if (lo >= hi) continue;
+      touched.emplace_back(lo, hi);
+      t0 = std::min(t0, lo);
+      t1 = std::max(t1, hi - 1);
     }
-    for (int i = last + 1; i <= t1; ++i) s.acc[static_cast<size_t>(i)] = 0;
+    if (t0 > t1) continue;
+    std::sort(touched.begin(), touched.end());
+    // Prefix sums give each pixel's coverage; cells at or past W only affect pixels outside.
+    // Between touched cells the sum does not change: those pixels are filled, not summed.
+    const int last = std::min(t1, W - 1);
+    auto coverage = [](double run) { return static_cast<std::uint8_t>(std::min(1.0, std::abs(run)) * 255.0 + 0.5); };
+    double run = 0;
+    int i = t0;
+    for (const auto& [lo, hi] : touched) {
+      if (lo > i) {
+        if (i <= last) std::memset(s.cov.data() + i, coverage(run), static_cast<size_t>(std::min(lo, last + 1) - i));
+        i = lo;
+      }
+      for (; i < hi; ++i) {
+        if (i <= last) {
+          run += s.acc[static_cast<size_t>(i)];
+          s.cov[static_cast<size_t>(i)] = coverage(run);
+        }
+        s.acc[static_cast<size_t>(i)] = 0;
+      }
+    }
     int x1 = last + 1;
     // Past the last touched cell the coverage stays what it was (inside: to the window's end).
-    const std::uint8_t tail = static_cast<std::uint8_t>(std::min(1.0, std::abs(run)) * 255.0 + 0.5);
+    const std::uint8_t tail = coverage(run);
     if (tail > 0 && x1 < W) {
       std::fill(s.cov.begin() + x1, s.cov.begin() + W, tail);
       x1 = W;
@@ -401,11 +438,14 @@ void render_window(const PieceData& piece, const std::vector<LayerRuntime>& laye
         for (std::uint32_t e = t.entry0; e < t.entry1; ++e) {
           const EntrySetup& es = s.entries[e];
           const LayerRuntime& L = layers[es.layer->layer];
+          int k0, k1;
           if (e == t.entry0) {
-            sample_entry(es, L, i0, n, j, pixel_mm, piece, dst);
+            sample_entry(es, L, i0, n, j, pixel_mm, piece, dst, k0, k1);
+            std::fill(dst, dst + k0, 0u);
+            std::fill(dst + k1, dst + n, 0u);
           } else {
-            sample_entry(es, L, i0, n, j, pixel_mm, piece, s.tmp.data());
-            for (int k = 0; k < n; ++k) dst[k] = over_texel(s.tmp[static_cast<size_t>(k)], dst[k]);
+            sample_entry(es, L, i0, n, j, pixel_mm, piece, s.tmp.data(), k0, k1);
+            for (int k = k0; k < k1; ++k) dst[k] = over_texel(s.tmp[static_cast<size_t>(k)], dst[k]);
           }
         }
       }
@@ -418,6 +458,14 @@ void render_window(const PieceData& piece, const std::vector<LayerRuntime>& laye
     for (int i = x0; i < x1; ++i) {
       const std::uint32_t c = s.cov[static_cast<size_t>(i)];
       if (c == 0) continue;
+      if (c == 255 && s.written[static_cast<size_t>(i)] && (s.colour[static_cast<size_t>(i)] >> 24) == 255) {
+        // Inside the piece and opaque: the texel is the pixel (src-over with alpha 1 replaces).
+        const Rgba8 o{static_cast<std::uint8_t>(s.colour[static_cast<size_t>(i)]),
+                      static_cast<std::uint8_t>(s.colour[static_cast<size_t>(i)] >> 8),
+                      static_cast<std::uint8_t>(s.colour[static_cast<size_t>(i)] >> 16), 255};
+        orow[i] = o;
+        continue;
+      }
       std::uint32_t px;
       if (s.written[static_cast<size_t>(i)]) {
         px = s.colour[static_cast<size_t>(i)];

@@ -176,6 +176,37 @@ void sample_span(const MipImage& image, const SpanFilter& filter, double u0, dou
   }
 }
 
+void covered_range(const MipImage& image, const SpanFilter& filter, double u0, double v0, double du, double dv,
+                   int n, int& k0, int& k1) {
+  double lo = 0, hi = n;  // the span as a real interval of k
+  // Keeps the k where start + k * step lies in (-margin, size + margin).
+  auto clip = [&](double start, double step, int size, int coarse_size) {
+    // Beyond half a coarse texel past the edge every tap reads the zero border; anisotropic taps
+    // reach further along the footprint.
+    double margin = 1.0 + static_cast<double>(size) / coarse_size;
+    if (filter.kind == SpanFilter::Kind::kAnisotropic)
+      margin += filter.taps * (std::abs(filter.tap_du) + std::abs(filter.tap_dv));
+    const double a = -margin - start, b = size + margin - start;  // need a < k * step < b
+    if (step == 0) {
+      if (!(a < 0 && 0 < b)) hi = lo;  // the whole span outside (or NaN)
+      return;
+    }
+    const double ka = a / step, kb = b / step;
+    lo = std::max(lo, std::min(ka, kb));
+    hi = std::min(hi, std::max(ka, kb));
+  };
+  const int coarse = std::min(filter.kind == SpanFilter::Kind::kBilinear ? filter.level : filter.level + 1,
+                              image.level_count() - 1);
+  if (image.wrap_u() != Wrap::kRepeat) clip(u0, du, image.width(), image.level(coarse).width);
+  if (image.wrap_v() != Wrap::kRepeat) clip(v0, dv, image.height(), image.level(coarse).height);
+  if (!(lo < hi)) {
+    k0 = k1 = 0;
+    return;
+  }
+  k0 = static_cast<int>(std::clamp(std::floor(lo), 0.0, static_cast<double>(n)));
+  k1 = static_cast<int>(std::clamp(std::ceil(hi) + 1, static_cast<double>(k0), static_cast<double>(n)));
+}
+
 std::uint32_t sample_point(const MipImage& image, const SpanFilter& filter, double u, double v) {
   std::uint32_t px = 0;
   sample_span(image, filter, u, v, 0, 0, 1, &px);

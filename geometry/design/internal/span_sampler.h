@@ -30,6 +30,13 @@ SpanFilter choose_filter(const MipImage& image, double du_dx, double dv_dx, doub
 void sample_span(const MipImage& image, const SpanFilter& filter, double u0, double v0, double du,
                  double dv, int n, std::uint32_t* out);
 
+/// The part [k0, k1) of such a span (0 <= k0 <= k1 <= n) outside which every sample is
+/// transparent because it falls beyond the edge of an image that does not repeat: a motif
+/// placed on part of a piece costs nothing where it is not. Conservative: [k0, k1) may include a
+/// few transparent samples. The whole span when both axes repeat.
+void covered_range(const MipImage& image, const SpanFilter& filter, double u0, double v0, double du, double dv,
+                   int n, int& k0, int& k1);
+
 /// One filtered sample (for tests and slow paths); same maths as sample_span.
 std::uint32_t sample_point(const MipImage& image, const SpanFilter& filter, double u, double v);
 
