@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "geometry/design/internal/mip_image.h"
@@ -49,6 +50,57 @@ TEST(SpanSampler, TransparentOutsideTheImage) {
   EXPECT_EQ(sample_point(mip, f, 4, 4) >> 24, 255u);
   // Half a texel past the edge: half covered.
   EXPECT_NEAR(static_cast<double>(sample_point(mip, f, 8.0, 4) >> 24), 128, 1);
+}
+
+// The span loop against the texel formula written out here (lerp_texel across, then down, on the
+// level's padded texels), for random spans in both wrap modes and random premultiplied texels;
+// and covered_range never leaves out a pixel that is not transparent.
+TEST(SpanSampler, SpansMatchTheTexelFormulaAndCoveredRangeKeepsEveryVisiblePixel) {
+  std::uint32_t seed = 12345;
+  auto next = [&seed] { return seed = seed * 1664525u + 1013904223u; };
+  auto img = test::make_image(37, 23, [&](int, int) {
+    const auto a = static_cast<std::uint8_t>(next() >> 24);
+    return Rgba8{static_cast<std::uint8_t>(next() >> 24), static_cast<std::uint8_t>(next() >> 24),
+                 static_cast<std::uint8_t>(next() >> 24), a};
+  });
+  for (Wrap wrap : {Wrap::kRepeat, Wrap::kTransparent}) {
+    const MipImage mip(*img, wrap, wrap);
+    const MipLevel& lv = mip.level(0);
+    const SpanFilter f;
+    for (int trial = 0; trial < 400; ++trial) {
+      auto uniform = [&](double lo, double hi) { return lo + (hi - lo) * (next() >> 8) / double(1 << 24); };
+      const double u0 = uniform(-60, 100), v0 = uniform(-40, 70), du = uniform(-0.9, 0.9), dv = uniform(-0.6, 0.6);
+      constexpr int kN = 300;
+      std::uint32_t out[kN];
+      sample_span(mip, f, u0, v0, du, dv, kN, out);
+      int k0 = 0, k1 = 0;
+      covered_range(mip, f, u0, v0, du, dv, kN, k0, k1);
+      ASSERT_LE(0, k0);
+      ASSERT_LE(k0, k1);
+      ASSERT_LE(k1, kN);
+      // Reference: the same 32.32 fixed point walk, clamped or wrapped like the sampler.
+      const auto one = std::int64_t{1} << 32;
+      std::int64_t U = std::llround((u0 - 0.5) * 4294967296.0), V = std::llround((v0 - 0.5) * 4294967296.0);
+      const std::int64_t sU = std::llround(du * 4294967296.0), sV = std::llround(dv * 4294967296.0);
+      for (int k = 0; k < kN; ++k, U += sU, V += sV) {
+        std::int64_t tu = U, tv = V;
+        if (wrap == Wrap::kRepeat) {
+          tu = ((tu % (lv.width * one)) + lv.width * one) % (lv.width * one);
+          tv = ((tv % (lv.height * one)) + lv.height * one) % (lv.height * one);
+        } else {
+          tu = std::clamp<std::int64_t>(tu, -one, lv.width * one);
+          tv = std::clamp<std::int64_t>(tv, -one, lv.height * one);
+        }
+        const std::uint32_t fx = static_cast<std::uint32_t>(tu >> 24) & 0xFF, fy = static_cast<std::uint32_t>(tv >> 24) & 0xFF;
+        const std::uint32_t* p = lv.origin() + (tv >> 32) * lv.stride + (tu >> 32);
+        const std::uint32_t want =
+            lerp_texel(lerp_texel(p[0], p[1], fx), lerp_texel(p[lv.stride], p[lv.stride + 1], fx), fy);
+        ASSERT_EQ(out[k], want) << "wrap " << int(wrap) << " trial " << trial << " pixel " << k;
+        if (k < k0 || k >= k1) ASSERT_EQ(out[k], 0u) << "outside covered_range " << k0 << ".." << k1 << ": pixel " << k;
+      }
+      if (wrap == Wrap::kRepeat) EXPECT_EQ(k1 - k0, kN);
+    }
+  }
 }
 
 // Pixels sampling a 1-texel checkerboard 8 texels apart: a point sampler aliases (all black or

@@ -179,5 +179,43 @@ TEST(InkConverter, ProfileErrorsNameTheFile) {
   EXPECT_FALSE(InkConverter::create(bad_limit));
 }
 
+// The table of every colour gives the per-pixel interpolation's inks for all 2^24 colours, at
+// full coverage and partial coverage, with an ink limit, whatever the row's length (the 16-pixel
+// transposition and its tail). Also with a three-ink printer (the packed path without transposition).
+TEST(InkConverter, DirectTableEqualsInterpolationForEveryColour) {
+  for (const auto& inks : {std::vector<std::string>{"cyan", "magenta", "yellow", "black"},
+                           std::vector<std::string>{"cyan", "magenta", "yellow"}}) {
+    InkConverterSettings s;
+    s.ink_names = inks;
+    s.ink_limit_percent = 260;
+    auto plain = InkConverter::create(s);
+    s.direct_table = true;
+    auto direct = InkConverter::create(s);
+    ASSERT_TRUE(plain && direct) << (plain ? direct.error().what() : plain.error().what());
+    const int nc = static_cast<int>(inks.size());
+    constexpr int kRow = 65536 + 7;
+    std::vector<Rgba8> row(kRow);
+    std::vector<std::vector<std::uint8_t>> a(static_cast<size_t>(nc), std::vector<std::uint8_t>(kRow)),
+        b(static_cast<size_t>(nc), std::vector<std::uint8_t>(kRow));
+    std::vector<std::uint8_t*> pa, pb;
+    for (int c = 0; c < nc; ++c) pa.push_back(a[static_cast<size_t>(c)].data()), pb.push_back(b[static_cast<size_t>(c)].data());
+    for (std::uint32_t base = 0; base < (1u << 24); base += 65536) {
+      for (int i = 0; i < kRow; ++i) {
+        const std::uint32_t key = (base + static_cast<std::uint32_t>(i)) & 0xffffffu;
+        // Mostly opaque runs (the transposed path) with a partly covered pixel now and then.
+        const std::uint8_t alpha = i % 97 == 0 ? static_cast<std::uint8_t>(i % 256) : 255;
+        row[static_cast<size_t>(i)] = {static_cast<std::uint8_t>(key), static_cast<std::uint8_t>(key >> 8),
+                                       static_cast<std::uint8_t>(key >> 16), alpha};
+      }
+      const int n = kRow - static_cast<int>(base / 65536 % 16);  // tails of every length
+      EXPECT_EQ(plain->convert_row(row.data(), n, pa.data()), direct->convert_row(row.data(), n, pb.data()));
+      for (int c = 0; c < nc; ++c)
+        for (int i = 0; i < n; ++i)
+          ASSERT_EQ(a[static_cast<size_t>(c)][static_cast<size_t>(i)], b[static_cast<size_t>(c)][static_cast<size_t>(i)])
+              << inks.size() << " inks, ink " << c << ", pixel " << base + static_cast<std::uint32_t>(i);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace tp::rip
