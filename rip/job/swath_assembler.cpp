@@ -6,6 +6,7 @@
 #include <cstring>
 
 #include "rip/common/internal/cpu_clock.h"
+#include "rip/common/memory.h"
 #include "rip/swath/packbits.h"
 
 namespace tp::rip {
@@ -123,6 +124,7 @@ Status SwathAssembler::emit_ready(std::int64_t rows_done, ThreadPool& pool, cons
     for (size_t len : channel_len_) total += len;
     // Appended, not resized and copied over: no zero fill of tens of megabytes.
     swath.data.reserve(total);
+    advise_huge_pages(swath.data.data(), total);
     for (size_t c = 0; c < channel_out_.size(); ++c)
       swath.data.insert(swath.data.end(), channel_out_[c].begin(), channel_out_[c].begin() + static_cast<std::ptrdiff_t>(channel_len_[c]));
     stats.raw_bytes += h.raw_bytes;
