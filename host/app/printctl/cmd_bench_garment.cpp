@@ -17,6 +17,7 @@
 #include "geometry/samples/garments.h"
 #include "geometry/samples/sizes.h"
 #include "host/app/printctl/commands.h"
+#include "host/app/printctl/garment_files.h"
 
 namespace tp::host::cli {
 namespace {
@@ -30,6 +31,7 @@ struct BenchGarmentArgs {
   int vertices = 10000;
   int threads = 2;
   std::string data;
+  std::string out;  ///< when set: each garment's OBJ and previews go here
 };
 
 [[noreturn]] void die(const std::string& msg, int code) {
@@ -52,6 +54,12 @@ void bench_one(const std::string& name, const geometry::Pattern& pattern, const 
   if (!g) die(name + ": " + g.error().what(), 1);
   const double seconds = since(t0);
   geometry::DistortionReport r = geometry::measure_distortion(pattern, *g, &body);
+  if (!a.out.empty()) {
+    std::error_code ec;
+    std::filesystem::create_directories(a.out, ec);
+    if (ec) die(a.out + ": " + ec.message(), 1);
+    if (auto err = write_garment_files(a.out, name, pattern, *g, body.mesh(), name + "_body"); !err.empty()) die(err, 1);
+  }
   std::printf("garment=%s vertices=%d strain_mean=%.4f strain_p95=%.4f seam_len_diff_max=%.4f inside_body=%d seconds=%.2f\n",
               name.c_str(), r.vertices, r.strain_mean, r.strain_p95, r.seam_len_diff_max, r.inside_body, seconds);
   std::fflush(stdout);
@@ -118,6 +126,7 @@ void register_bench_garment(CLI::App& bench) {
   cmd->add_option("--size", args->size, "dress form size for the samples");
   cmd->add_option("--vertices", args->vertices, "target garment vertex count")->check(CLI::Range(100, 1000000));
   cmd->add_option("--threads", args->threads, "threads for sewing")->check(CLI::Range(1, 8));
+  cmd->add_option("--out", args->out, "also write each garment's OBJ, body OBJ and previews into this folder");
   cmd->add_option("--data", args->data, "shared reference data folder (default $TP_SHARED_DATA or ../shared/data)");
   cmd->callback([args] { run_bench_garment(*args); });
 }

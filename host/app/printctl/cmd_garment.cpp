@@ -2,18 +2,15 @@
 // dress form and previews.
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
 #include "geometry/garment/distortion.h"
-#include "geometry/garment/garment_obj.h"
 #include "geometry/pattern/pattern_json.h"
-#include "geometry/preview/render_preview.h"
 #include "geometry/samples/garments.h"
 #include "host/app/printctl/commands.h"
-#include "rip/image/image_io.h"
+#include "host/app/printctl/garment_files.h"
 
 namespace tp::host::cli {
 namespace {
@@ -31,25 +28,6 @@ struct GarmentArgs {
   throw CLI::RuntimeError(code);
 }
 
-void write_text(const std::filesystem::path& path, const std::string& text) {
-  std::ofstream f(path, std::ios::binary);
-  f << text;
-  if (!f) die(path.string() + ": cannot write", 1);
-}
-
-std::string body_obj(const geometry::BodyMesh& body) {
-  std::string out = "# " + body.name + ": body frame, mm (y up, z front, x wearer's left)\n";
-  char buf[96];
-  for (const auto& v : body.vertices_mm) {
-    std::snprintf(buf, sizeof buf, "v %.3f %.3f %.3f\n", v.x, v.y, v.z);
-    out += buf;
-  }
-  for (const auto& t : body.triangles) {
-    std::snprintf(buf, sizeof buf, "f %d %d %d\n", t[0] + 1, t[1] + 1, t[2] + 1);
-    out += buf;
-  }
-  return out;
-}
 
 nlohmann::json report_json(const geometry::DistortionReport& r, const geometry::SewStats& st) {
   nlohmann::json seams = nlohmann::json::array();
@@ -73,17 +51,12 @@ void run_garment(const GarmentArgs& a) {
   if (ec) die(a.out + ": " + ec.message(), 1);
 
   if (auto s = geometry::save_pattern_json(g->pattern, dir / (a.name + ".pattern.json")); !s) die(s.error().what(), 1);
-  write_text(dir / (a.name + ".obj"), geometry::garment_to_obj(g->pattern, g->garment));
-  write_text(dir / "dress_form.obj", body_obj(g->body->mesh()));
-  for (auto view : {geometry::PreviewView::kFront, geometry::PreviewView::kSide, geometry::PreviewView::kBack}) {
-    auto img = geometry::render_preview(g->garment, &g->body->mesh(), view);
-    auto path = dir / (a.name + "_" + geometry::to_string(view) + ".png");
-    if (auto s = rip::write_png(path, img, rip::PngChannels::kRgbOverWhite); !s) die(s.error().what(), 1);
-  }
+  if (auto err = write_garment_files(dir, a.name, g->pattern, g->garment, g->body->mesh(), "dress_form"); !err.empty())
+    die(err, 1);
   geometry::DistortionReport r = geometry::measure_distortion(g->pattern, g->garment, g->body.get());
   nlohmann::json j{{"garment", a.name}, {"size", a.size}, {"pieces", g->pattern.pieces.size()},
                    {"stitches", g->pattern.stitches.size()}, {"distortion", report_json(r, g->stats)}};
-  write_text(dir / "report.json", j.dump(2) + "\n");
+  if (auto err = write_text(dir / "report.json", j.dump(2) + "\n"); !err.empty()) die(err, 1);
   std::printf("garment=%s size=%s pieces=%zu vertices=%d strain_mean=%.4f strain_p95=%.4f seam_len_diff_max=%.4f "
               "inside_body=%d seconds=%.2f out=%s\n",
               a.name.c_str(), a.size.c_str(), g->pattern.pieces.size(), r.vertices, r.strain_mean, r.strain_p95,
