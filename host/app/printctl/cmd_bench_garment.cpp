@@ -32,6 +32,7 @@ struct BenchGarmentArgs {
   int threads = 2;
   std::string data;
   std::string out;  ///< when set: each garment's OBJ and previews go here
+  geometry::SewOptions sew;  ///< solver settings other than mesh size and threads
 };
 
 [[noreturn]] void die(const std::string& msg, int code) {
@@ -47,7 +48,7 @@ double since(std::chrono::steady_clock::time_point t0) {
 void bench_one(const std::string& name, const geometry::Pattern& pattern, const geometry::BodySdf& body,
                const BenchGarmentArgs& a) {
   const auto t0 = std::chrono::steady_clock::now();
-  geometry::SewOptions o;
+  geometry::SewOptions o = a.sew;
   o.target_edge_mm = geometry::target_edge_for_vertex_count(pattern, a.vertices);
   o.threads = a.threads;
   auto g = geometry::sew_garment(pattern, body, o);
@@ -126,6 +127,11 @@ void register_bench_garment(CLI::App& bench) {
   cmd->add_option("--size", args->size, "dress form size for the samples");
   cmd->add_option("--vertices", args->vertices, "target garment vertex count")->check(CLI::Range(100, 1000000));
   cmd->add_option("--threads", args->threads, "threads for sewing")->check(CLI::Range(1, 8));
+  cmd->add_option("--coarse-factor", args->sew.coarse_factor, "sew first on a mesh this much coarser (0: one level)");
+  cmd->add_option("--sewing-iterations", args->sew.sewing_iterations, "phase A iterations");
+  cmd->add_option("--relax-iterations", args->sew.relax_iterations, "phase B iteration limit");
+  cmd->add_option("--clearance-mm", args->sew.clearance_mm, "distance the garment keeps from the body");
+  cmd->add_option("--gravity", args->sew.gravity_per_mm, "weight per area relative to membrane stiffness");
   cmd->add_option("--out", args->out, "also write each garment's OBJ, body OBJ and previews into this folder");
   cmd->add_option("--data", args->data, "shared reference data folder (default $TP_SHARED_DATA or ../shared/data)");
   cmd->callback([args] { run_bench_garment(*args); });
