@@ -60,6 +60,19 @@ void bench_one(const std::string& name, const geometry::Pattern& pattern, const 
     std::filesystem::create_directories(a.out, ec);
     if (ec) die(a.out + ": " + ec.message(), 1);
     if (auto err = write_garment_files(a.out, name, pattern, *g, body.mesh(), name + "_body"); !err.empty()) die(err, 1);
+    std::string seams;
+    for (const auto& sl : r.seams) {
+      const geometry::Stitch& st = pattern.stitches[static_cast<size_t>(sl.stitch)];
+      char line[320];
+      std::snprintf(line, sizeof line, "%d %s.%s %s.%s a_mm=%.2f b_mm=%.2f sewn_mm=%.2f diff=%.4f\n", sl.stitch,
+                    pattern.pieces[static_cast<size_t>(st.a.piece)].name.c_str(),
+                    pattern.pieces[static_cast<size_t>(st.a.piece)].edges[static_cast<size_t>(st.a.edge)].name.c_str(),
+                    pattern.pieces[static_cast<size_t>(st.b.piece)].name.c_str(),
+                    pattern.pieces[static_cast<size_t>(st.b.piece)].edges[static_cast<size_t>(st.b.edge)].name.c_str(),
+                    sl.a_mm, sl.b_mm, sl.sewn_mm, sl.diff);
+      seams += line;
+    }
+    if (auto err = write_text(std::filesystem::path(a.out) / (name + "_seams.txt"), seams); !err.empty()) die(err, 1);
   }
   std::printf("garment=%s vertices=%d strain_mean=%.4f strain_p95=%.4f seam_len_diff_max=%.4f inside_body=%d seconds=%.2f\n",
               name.c_str(), r.vertices, r.strain_mean, r.strain_p95, r.seam_len_diff_max, r.inside_body, seconds);
@@ -131,6 +144,7 @@ void register_bench_garment(CLI::App& bench) {
   cmd->add_option("--sewing-iterations", args->sew.sewing_iterations, "phase A iterations");
   cmd->add_option("--relax-iterations", args->sew.relax_iterations, "phase B iteration limit");
   cmd->add_option("--clearance-mm", args->sew.clearance_mm, "distance the garment keeps from the body");
+  cmd->add_option("--seam-edge-weight", args->sew.seam_edge_weight, "stiffness of sewn seams against their pattern length");
   cmd->add_option("--gravity", args->sew.gravity_per_mm, "weight per area relative to membrane stiffness");
   cmd->add_option("--out", args->out, "also write each garment's OBJ, body OBJ and previews into this folder");
   cmd->add_option("--data", args->data, "shared reference data folder (default $TP_SHARED_DATA or ../shared/data)");
