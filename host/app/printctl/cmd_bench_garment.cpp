@@ -44,6 +44,22 @@ double since(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
+// One line per stitch: its pieces and edges, 2D lengths of both sides and the sewn length.
+std::string seam_lines(const geometry::Pattern& pattern, const geometry::DistortionReport& r) {
+  auto side = [&](const geometry::EdgeSpan& e) {
+    const geometry::Piece& p = pattern.pieces[static_cast<size_t>(e.piece)];
+    return p.name + "." + p.edges[static_cast<size_t>(e.edge)].name;
+  };
+  std::string out;
+  for (const auto& sl : r.seams) {
+    const geometry::Stitch& st = pattern.stitches[static_cast<size_t>(sl.stitch)];
+    char nums[160];
+    std::snprintf(nums, sizeof nums, " a_mm=%.2f b_mm=%.2f sewn_mm=%.2f diff=%.4f\n", sl.a_mm, sl.b_mm, sl.sewn_mm, sl.diff);
+    out += std::to_string(sl.stitch) + " " + side(st.a) + " " + side(st.b) + nums;
+  }
+  return out;
+}
+
 // Meshes `pattern` for about `vertices` vertices, sews it on `body` and prints one line.
 void bench_one(const std::string& name, const geometry::Pattern& pattern, const geometry::BodySdf& body,
                const BenchGarmentArgs& a) {
@@ -60,19 +76,8 @@ void bench_one(const std::string& name, const geometry::Pattern& pattern, const 
     std::filesystem::create_directories(a.out, ec);
     if (ec) die(a.out + ": " + ec.message(), 1);
     if (auto err = write_garment_files(a.out, name, pattern, *g, body.mesh(), name + "_body"); !err.empty()) die(err, 1);
-    std::string seams;
-    for (const auto& sl : r.seams) {
-      const geometry::Stitch& st = pattern.stitches[static_cast<size_t>(sl.stitch)];
-      char line[320];
-      std::snprintf(line, sizeof line, "%d %s.%s %s.%s a_mm=%.2f b_mm=%.2f sewn_mm=%.2f diff=%.4f\n", sl.stitch,
-                    pattern.pieces[static_cast<size_t>(st.a.piece)].name.c_str(),
-                    pattern.pieces[static_cast<size_t>(st.a.piece)].edges[static_cast<size_t>(st.a.edge)].name.c_str(),
-                    pattern.pieces[static_cast<size_t>(st.b.piece)].name.c_str(),
-                    pattern.pieces[static_cast<size_t>(st.b.piece)].edges[static_cast<size_t>(st.b.edge)].name.c_str(),
-                    sl.a_mm, sl.b_mm, sl.sewn_mm, sl.diff);
-      seams += line;
-    }
-    if (auto err = write_text(std::filesystem::path(a.out) / (name + "_seams.txt"), seams); !err.empty()) die(err, 1);
+    if (auto err = write_text(std::filesystem::path(a.out) / (name + "_seams.txt"), seam_lines(pattern, r)); !err.empty())
+      die(err, 1);
   }
   std::printf("garment=%s vertices=%d strain_mean=%.4f strain_p95=%.4f seam_len_diff_max=%.4f inside_body=%d seconds=%.2f\n",
               name.c_str(), r.vertices, r.strain_mean, r.strain_p95, r.seam_len_diff_max, r.inside_body, seconds);
@@ -140,13 +145,17 @@ void register_bench_garment(CLI::App& bench) {
   cmd->add_option("--size", args->size, "dress form size for the samples");
   cmd->add_option("--vertices", args->vertices, "target garment vertex count")->check(CLI::Range(100, 1000000));
   cmd->add_option("--threads", args->threads, "threads for sewing")->check(CLI::Range(1, 8));
-  cmd->add_option("--coarse-factor", args->sew.coarse_factor, "sew first on a mesh this much coarser (0: one level)");
-  cmd->add_option("--sewing-iterations", args->sew.sewing_iterations, "phase A iterations");
-  cmd->add_option("--relax-iterations", args->sew.relax_iterations, "phase B iteration limit");
-  cmd->add_option("--clearance-mm", args->sew.clearance_mm, "distance the garment keeps from the body");
-  cmd->add_option("--seam-edge-weight", args->sew.seam_edge_weight, "stiffness of sewn seams against their pattern length");
-  cmd->add_option("--gravity", args->sew.gravity_per_mm, "weight per area relative to membrane stiffness");
-  cmd->add_option("--out", args->out, "also write each garment's OBJ, body OBJ and previews into this folder");
+  cmd->add_option("--coarse-factor", args->sew.coarse_factor, "sew first on a mesh this much coarser (0: one level)")
+      ->check(CLI::Range(0.0, 10.0));
+  cmd->add_option("--sewing-iterations", args->sew.sewing_iterations, "phase A iterations")->check(CLI::Range(4, 100000));
+  cmd->add_option("--relax-iterations", args->sew.relax_iterations, "phase B iteration limit")->check(CLI::Range(1, 100000));
+  cmd->add_option("--clearance-mm", args->sew.clearance_mm, "distance the garment keeps from the body")
+      ->check(CLI::Range(0.0, 50.0));
+  cmd->add_option("--seam-edge-weight", args->sew.seam_edge_weight, "stiffness of sewn seams against their pattern length")
+      ->check(CLI::Range(0.0, 1e6));
+  cmd->add_option("--gravity", args->sew.gravity_per_mm, "weight per area relative to membrane stiffness")
+      ->check(CLI::Range(0.0, 1.0));
+  cmd->add_option("--out", args->out, "also write each garment's OBJ, body OBJ, previews and seam lengths into this folder");
   cmd->add_option("--data", args->data, "shared reference data folder (default $TP_SHARED_DATA or ../shared/data)");
   cmd->callback([args] { run_bench_garment(*args); });
 }
