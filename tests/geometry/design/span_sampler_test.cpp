@@ -96,9 +96,13 @@ TEST(SpanSampler, SpansMatchTheTexelFormulaAndCoveredRangeKeepsEveryVisiblePixel
         const std::uint32_t want =
             lerp_texel(lerp_texel(p[0], p[1], fx), lerp_texel(p[lv.stride], p[lv.stride + 1], fx), fy);
         ASSERT_EQ(out[k], want) << "wrap " << int(wrap) << " trial " << trial << " pixel " << k;
-        if (k < k0 || k >= k1) ASSERT_EQ(out[k], 0u) << "outside covered_range " << k0 << ".." << k1 << ": pixel " << k;
+        if (k < k0 || k >= k1) {
+          ASSERT_EQ(out[k], 0u) << "outside covered_range " << k0 << ".." << k1 << ": pixel " << k;
+        }
       }
-      if (wrap == Wrap::kRepeat) EXPECT_EQ(k1 - k0, kN);
+      if (wrap == Wrap::kRepeat) {
+        EXPECT_EQ(k1 - k0, kN);
+      }
     }
   }
 }
