@@ -1,16 +1,13 @@
 // host/pipeline/stage_garment.cpp: the garment stage: the pieces sewn on the job's body (or laid
 // flat when it has none), the distortion figures, the 3D garment as OBJ and its previews.
-#include <fstream>
-
 #include "geometry/body/load_body_obj.h"
 #include "geometry/garment/distortion.h"
 #include "geometry/garment/flat_garment.h"
 #include "geometry/garment/garment_obj.h"
 #include "geometry/garment/sew_garment.h"
-#include "geometry/preview/render_preview.h"
 #include "geometry/samples/garments.h"
+#include "host/pipeline/garment_files.h"
 #include "host/pipeline/internal/pipeline_state.h"
-#include "rip/image/image_io.h"
 
 namespace tp::host::internal {
 
@@ -36,13 +33,6 @@ Result<std::shared_ptr<const geometry::BodySdf>> job_body(const PipelineState& p
     return *sdf;
   }
   return std::shared_ptr<const geometry::BodySdf>();
-}
-
-Status write_text(const std::filesystem::path& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-  if (!out) return fail(ErrorCode::kIo, path.string() + ": cannot write");
-  return {};
 }
 
 }  // namespace
@@ -86,15 +76,11 @@ Status stage_garment(PipelineState& ps) {
 
   // The 3D garment with its per-piece texture coordinates, and the previews for the report.
   const auto& out = ps.options.out_dir;
-  if (auto st = write_text(out / "garment.obj", geometry::garment_to_obj(ps.pattern, *ps.garment)); !st) return st;
-  nlohmann::json previews = nlohmann::json::array();
-  for (auto view : {geometry::PreviewView::kFront, geometry::PreviewView::kSide, geometry::PreviewView::kBack}) {
-    auto img = geometry::render_preview(*ps.garment, ps.body ? &ps.body->mesh() : nullptr, view);
-    std::string name = "garment-" + geometry::to_string(view) + ".png";
-    if (auto st = rip::write_png(out / name, img); !st) return fail(ErrorCode::kIo, st.error().message);
-    previews.push_back(name);
-  }
-  ps.report["garment"]["files"] = {{"obj", "garment.obj"}, {"previews", previews}};
+  if (auto st = write_text_file(out / "garment.obj", geometry::garment_to_obj(ps.pattern, *ps.garment)); !st) return st;
+  auto previews = write_garment_previews(out, "garment-", *ps.garment, ps.body ? &ps.body->mesh() : nullptr,
+                                         rip::PngChannels::kRgba);
+  if (!previews) return fail(previews.error());
+  ps.report["garment"]["files"] = {{"obj", "garment.obj"}, {"previews", *previews}};
   return {};
 }
 

@@ -17,7 +17,7 @@
 #include "geometry/samples/garments.h"
 #include "geometry/samples/sizes.h"
 #include "host/app/printctl/commands.h"
-#include "host/app/printctl/garment_files.h"
+#include "host/pipeline/garment_files.h"
 
 namespace tp::host::cli {
 namespace {
@@ -75,9 +75,9 @@ void bench_one(const std::string& name, const geometry::Pattern& pattern, const 
     std::error_code ec;
     std::filesystem::create_directories(a.out, ec);
     if (ec) die(a.out + ": " + ec.message(), 1);
-    if (auto err = write_garment_files(a.out, name, pattern, *g, body.mesh(), name + "_body"); !err.empty()) die(err, 1);
-    if (auto err = write_text(std::filesystem::path(a.out) / (name + "_seams.txt"), seam_lines(pattern, r)); !err.empty())
-      die(err, 1);
+    if (auto st = write_garment_files(a.out, name, pattern, *g, body.mesh(), name + "_body"); !st) die(st.error().what(), 1);
+    if (auto st = write_text_file(std::filesystem::path(a.out) / (name + "_seams.txt"), seam_lines(pattern, r)); !st)
+      die(st.error().what(), 1);
   }
   std::printf("garment=%s vertices=%d strain_mean=%.4f strain_p95=%.4f seam_len_diff_max=%.4f inside_body=%d seconds=%.2f\n",
               name.c_str(), r.vertices, r.strain_mean, r.strain_p95, r.seam_len_diff_max, r.inside_body, seconds);

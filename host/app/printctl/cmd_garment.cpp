@@ -10,7 +10,7 @@
 #include "geometry/pattern/pattern_json.h"
 #include "geometry/samples/garments.h"
 #include "host/app/printctl/commands.h"
-#include "host/app/printctl/garment_files.h"
+#include "host/pipeline/garment_files.h"
 
 namespace tp::host::cli {
 namespace {
@@ -51,12 +51,12 @@ void run_garment(const GarmentArgs& a) {
   if (ec) die(a.out + ": " + ec.message(), 1);
 
   if (auto s = geometry::save_pattern_json(g->pattern, dir / (a.name + ".pattern.json")); !s) die(s.error().what(), 1);
-  if (auto err = write_garment_files(dir, a.name, g->pattern, g->garment, g->body->mesh(), "dress_form"); !err.empty())
-    die(err, 1);
+  if (auto st = write_garment_files(dir, a.name, g->pattern, g->garment, g->body->mesh(), "dress_form"); !st)
+    die(st.error().what(), 1);
   geometry::DistortionReport r = geometry::measure_distortion(g->pattern, g->garment, g->body.get());
   nlohmann::json j{{"garment", a.name}, {"size", a.size}, {"pieces", g->pattern.pieces.size()},
                    {"stitches", g->pattern.stitches.size()}, {"distortion", report_json(r, g->stats)}};
-  if (auto err = write_text(dir / "report.json", j.dump(2) + "\n"); !err.empty()) die(err, 1);
+  if (auto st = write_text_file(dir / "report.json", j.dump(2) + "\n"); !st) die(st.error().what(), 1);
   std::printf("garment=%s size=%s pieces=%zu vertices=%d strain_mean=%.4f strain_p95=%.4f seam_len_diff_max=%.4f "
               "inside_body=%d seconds=%.2f out=%s\n",
               a.name.c_str(), a.size.c_str(), g->pattern.pieces.size(), r.vertices, r.strain_mean, r.strain_p95,

@@ -1,0 +1,35 @@
+// host/pipeline/garment_files.h: the files written for a sewn garment (its OBJ with per-piece UVs,
+// the body, front/side/back previews): by the pipeline's garment stage and by `printctl garment`
+// and `printctl bench garment`.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "geometry/body/body_mesh.h"
+#include "geometry/garment/garment.h"
+#include "geometry/pattern/pattern.h"
+#include "host/common/error.h"
+#include "rip/image/image_io.h"
+
+namespace tp::host {
+
+/// Writes `text` to `path`. Fails (kIo) naming the file.
+[[nodiscard]] Status write_text_file(const std::filesystem::path& path, const std::string& text);
+
+/// Writes `<prefix>front.png`, `<prefix>side.png` and `<prefix>back.png` into `dir`: the garment
+/// (pieces coloured apart) on `body` when given. Returns the file names; fails (kIo) naming the file.
+[[nodiscard]] Result<std::vector<std::string>> write_garment_previews(const std::filesystem::path& dir,
+                                                                      const std::string& prefix,
+                                                                      const geometry::Garment& garment,
+                                                                      const geometry::BodyMesh* body,
+                                                                      rip::PngChannels channels);
+
+/// `<stem>.obj` (the garment), `<body_stem>.obj` (the body in mm, body frame) and the previews
+/// `<stem>_front|side|back.png` (over white) into `dir`, which must exist.
+[[nodiscard]] Status write_garment_files(const std::filesystem::path& dir, const std::string& stem,
+                                         const geometry::Pattern& pattern, const geometry::Garment& garment,
+                                         const geometry::BodyMesh& body, const std::string& body_stem);
+
+}  // namespace tp::host
