@@ -103,27 +103,46 @@ struct InkConverter::Table {
   std::vector<bool> black;
   double limit_fraction = 0;  ///< sum of ink fractions allowed at nodes (includes rounding margin)
 
-#if defined(__SSE2__)
-  /// Tetrahedral interpolation of one colour when lanes == kLane: the inks packed one per byte.
-  std::uint32_t interpolate4(std::uint8_t r, std::uint8_t g, std::uint8_t b) const {
+  /// Tetrahedral interpolation: the cube splits into six tetrahedra by the order of the three
+  /// fractions; the colour is a convex combination of one tetrahedron's corners (c0, c0 + d1,
+  /// c0 + d2, the far corner) with weights w. The tetrahedron comes from a table, not branches:
+  /// photographic input would mispredict them.
+  struct Corners {
+    const std::int16_t* c0;
+    std::uint32_t d1, d2;
+    std::uint32_t w[4];
+  };
+  Corners corners(std::uint8_t r, std::uint8_t g, std::uint8_t b) const {
     const AxisStep ar = axis_r[r], ag = axis_g[g], ab = axis_b[b];
-    const std::int16_t* c0 = nodes.data() + ar.offset + ag.offset + ab.offset;
     const std::uint32_t fr = ar.frac, fg = ag.frac, fb = ab.frac;
     const Tetra& tt = tetra[(fr >= fg) | ((fg >= fb) << 1) | ((fr >= fb) << 2)];
+    // Largest, middle and smallest fraction without indexing.
     const std::uint32_t f1 = std::max(fr, std::max(fg, fb)), f3 = std::min(fr, std::min(fg, fb));
     const std::uint32_t f2 = fr + fg + fb - f1 - f3;
+    return {nodes.data() + ar.offset + ag.offset + ab.offset, tt.d1, tt.d2, {kFracOne - f1, f1 - f2, f2 - f3, f3}};
+  }
+
+#if defined(__SSE2__)
+  /// Inks lane..lane + 3 of the interpolation, packed one per byte.
+  std::uint32_t interpolate_lanes(const Corners& k, int lane) const {
+    const std::int16_t* c0 = k.c0 + lane;
     // madd multiplies (corner, weight) int16 pairs and adds each pair.
-    const __m128i wa = _mm_set1_epi32(static_cast<int>((kFracOne - f1) | ((f1 - f2) << 16)));
-    const __m128i wb = _mm_set1_epi32(static_cast<int>((f2 - f3) | (f3 << 16)));
+    const __m128i wa = _mm_set1_epi32(static_cast<int>(k.w[0] | (k.w[1] << 16)));
+    const __m128i wb = _mm_set1_epi32(static_cast<int>(k.w[2] | (k.w[3] << 16)));
     const __m128i a0 = _mm_loadl_epi64(reinterpret_cast<const __m128i*>(c0));
-    const __m128i a1 = _mm_loadl_epi64(reinterpret_cast<const __m128i*>(c0 + tt.d1));
-    const __m128i a2 = _mm_loadl_epi64(reinterpret_cast<const __m128i*>(c0 + tt.d2));
+    const __m128i a1 = _mm_loadl_epi64(reinterpret_cast<const __m128i*>(c0 + k.d1));
+    const __m128i a2 = _mm_loadl_epi64(reinterpret_cast<const __m128i*>(c0 + k.d2));
     const __m128i a3 = _mm_loadl_epi64(reinterpret_cast<const __m128i*>(c0 + stride_r + stride_g + stride_b));
     __m128i acc = _mm_add_epi32(_mm_madd_epi16(_mm_unpacklo_epi16(a0, a1), wa),
                                 _mm_madd_epi16(_mm_unpacklo_epi16(a2, a3), wb));
     acc = _mm_srli_epi32(_mm_add_epi32(acc, _mm_set1_epi32(kFracOne * kNodeScale / 2)), 15);
     const __m128i v16 = _mm_packs_epi32(acc, acc);
     return static_cast<std::uint32_t>(_mm_cvtsi128_si32(_mm_packus_epi16(v16, v16)));
+  }
+
+  /// Up to four inks (lanes == kLane) of one colour, packed one per byte.
+  std::uint32_t interpolate4(std::uint8_t r, std::uint8_t g, std::uint8_t b) const {
+    return interpolate_lanes(corners(r, g, b), 0);
   }
 
   /// Fills `direct` with every colour's interpolation, on `threads` threads.
@@ -310,8 +329,6 @@ int InkConverter::ink_limit_8bit() const { return table_->limit_8bit; }
 bool InkConverter::convert_row(const geometry::Rgba8* in, int n, std::uint8_t* const* out) const {
   const Table& t = *table_;
   const int nc = t.channels, lanes = t.lanes;
-  const std::int16_t* nodes = t.nodes.data();
-  const std::uint32_t far = t.stride_r + t.stride_g + t.stride_b;
   // Byte stores may alias anything: keep the plane pointers in a local array the stores cannot
   // reach, or the compiler reloads them after every store.
   std::uint8_t* plane[16];
@@ -402,42 +419,18 @@ bool InkConverter::convert_row(const geometry::Rgba8* in, int n, std::uint8_t* c
     any = true;
     const std::uint32_t key = p.r | (p.g << 8) | (p.b << 16);
     if (key != last_rgb) {
-      // Tetrahedral interpolation: the cube splits into six tetrahedra by the order of the three
-      // fractions; the colour is a convex combination of one tetrahedron's corners. The
-      // tetrahedron comes from a table, not branches: photographic input would mispredict them.
       last_rgb = key;
-      const AxisStep ar = t.axis_r[p.r], ag = t.axis_g[p.g], ab = t.axis_b[p.b];
-      const std::int16_t* c0 = nodes + ar.offset + ag.offset + ab.offset;
-      const std::uint32_t fr = ar.frac, fg = ag.frac, fb = ab.frac;
-      const Table::Tetra& tt = t.tetra[(fr >= fg) | ((fg >= fb) << 1) | ((fr >= fb) << 2)];
-      // Largest, middle and smallest fraction without indexing.
-      const std::uint32_t f1 = std::max(fr, std::max(fg, fb)), f3 = std::min(fr, std::min(fg, fb));
-      const std::uint32_t f2 = fr + fg + fb - f1 - f3;
-      const std::int16_t* c1 = c0 + tt.d1;
-      const std::int16_t* c2 = c0 + tt.d2;
-      const std::int16_t* c3 = c0 + far;
-      const std::uint32_t w0 = kFracOne - f1, w1 = f1 - f2, w2 = f2 - f3, w3 = f3;
+      const Table::Corners k = t.corners(p.r, p.g, p.b);
 #if defined(__SSE2__)
-      // Four inks at once: madd multiplies (corner, weight) int16 pairs and adds each pair.
-      const __m128i wa = _mm_set1_epi32(static_cast<int>(w0 | (w1 << 16)));
-      const __m128i wb = _mm_set1_epi32(static_cast<int>(w2 | (w3 << 16)));
-      const __m128i half = _mm_set1_epi32(kFracOne * kNodeScale / 2);
       for (int g = 0; g < lanes; g += kLane) {
-        const __m128i a0 = _mm_loadl_epi64(reinterpret_cast<const __m128i*>(c0 + g));
-        const __m128i a1 = _mm_loadl_epi64(reinterpret_cast<const __m128i*>(c1 + g));
-        const __m128i a2 = _mm_loadl_epi64(reinterpret_cast<const __m128i*>(c2 + g));
-        const __m128i a3 = _mm_loadl_epi64(reinterpret_cast<const __m128i*>(c3 + g));
-        __m128i acc = _mm_add_epi32(_mm_madd_epi16(_mm_unpacklo_epi16(a0, a1), wa),
-                                    _mm_madd_epi16(_mm_unpacklo_epi16(a2, a3), wb));
-        acc = _mm_srli_epi32(_mm_add_epi32(acc, half), 15);  // / (kFracOne * kNodeScale)
-        const __m128i v16 = _mm_packs_epi32(acc, acc);
-        const int four = _mm_cvtsi128_si32(_mm_packus_epi16(v16, v16));
+        const std::uint32_t four = t.interpolate_lanes(k, g);
         std::memcpy(last_ink + g, &four, 4);
       }
 #else
+      const std::int16_t* corner[4] = {k.c0, k.c0 + k.d1, k.c0 + k.d2, k.c0 + t.stride_r + t.stride_g + t.stride_b};
       for (int c = 0; c < nc; ++c) {
-        const std::int32_t acc = c0[c] * static_cast<std::int32_t>(w0) + c1[c] * static_cast<std::int32_t>(w1) +
-                                 c2[c] * static_cast<std::int32_t>(w2) + c3[c] * static_cast<std::int32_t>(w3);
+        std::int32_t acc = 0;
+        for (int q = 0; q < 4; ++q) acc += corner[q][c] * static_cast<std::int32_t>(k.w[q]);
         last_ink[c] = static_cast<std::uint8_t>((acc + kFracOne * kNodeScale / 2) / (kFracOne * kNodeScale));
       }
 #endif
