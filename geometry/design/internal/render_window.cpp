@@ -198,7 +198,8 @@ void sample_entry(const EntrySetup& es, const LayerRuntime& L, int i0, int n, in
   }
 }
 
-inline void composite(Rgba8& o, std::uint32_t premult, std::uint32_t coverage) {
+// composite() for a texel that is not opaque or a pixel the outline only partly covers.
+[[gnu::noinline]] void composite_partial(Rgba8& o, std::uint32_t premult, std::uint32_t coverage) {
   const std::uint32_t pa = premult >> 24;
   const std::uint32_t a = (pa * coverage + 127) / 255;
   if (a == 0) return;
@@ -219,6 +220,17 @@ inline void composite(Rgba8& o, std::uint32_t premult, std::uint32_t coverage) {
     return static_cast<std::uint8_t>(std::lround((s * as + dch * ad * (1 - as)) / ao));
   };
   o = {mix(r, o.r), mix(g, o.g), mix(b, o.b), static_cast<std::uint8_t>(std::lround(ao * 255))};
+}
+
+// Src-over of premultiplied texel `premult` with outline coverage 0..255 onto `o`. Inside the
+// piece an opaque texel simply replaces the pixel: that case stays inline in the hot loop.
+inline void composite(Rgba8& o, std::uint32_t premult, std::uint32_t coverage) {
+  if (coverage == 255 && (premult >> 24) == 255) {
+    o = {static_cast<std::uint8_t>(premult), static_cast<std::uint8_t>(premult >> 8),
+         static_cast<std::uint8_t>(premult >> 16), 255};
+    return;
+  }
+  composite_partial(o, premult, coverage);
 }
 
 void draw_marks(const Scratch& s, std::uint32_t colour, int j, int x0, int x1, std::uint32_t* row,
@@ -375,19 +387,19 @@ void render_window(const PieceData& piece, const std::vector<LayerRuntime>& laye
     // 1. Coverage of the cut outline over this row.
     while (next_edge < s.edges.size() && s.edges[next_edge].y0 < j + 1) active.push_back(&s.edges[next_edge++]);
     active.erase(std::remove_if(active.begin(), active.end(), [j](const OutlineEdge* e) { return e->y1 <= j; }), active.end());
-    int t0 = W + 2, t1 = -1;
     std::vector<std::pair<int, int>>& touched = g_touched;
     touched.clear();
+    int t1 = -1;  // last touched cell
     for (const OutlineEdge* e : active) {
       int lo = 0, hi = 0;
       accumulate(s.acc.data(), W, *e, j, lo, hi);
       if (lo >= hi) continue;
       touched.emplace_back(lo, hi);
-      t0 = std::min(t0, lo);
       t1 = std::max(t1, hi - 1);
     }
-    if (t0 > t1) continue;
+    if (touched.empty()) continue;
     std::sort(touched.begin(), touched.end());
+    const int t0 = touched.front().first;
     // Prefix sums give each pixel's coverage; cells at or past W only affect pixels outside.
     // Between touched cells the sum does not change: those pixels are filled, not summed.
     const int last = std::min(t1, W - 1);
@@ -458,14 +470,6 @@ void render_window(const PieceData& piece, const std::vector<LayerRuntime>& laye
     for (int i = x0; i < x1; ++i) {
       const std::uint32_t c = s.cov[static_cast<size_t>(i)];
       if (c == 0) continue;
-      if (c == 255 && s.written[static_cast<size_t>(i)] && (s.colour[static_cast<size_t>(i)] >> 24) == 255) {
-        // Inside the piece and opaque: the texel is the pixel (src-over with alpha 1 replaces).
-        const Rgba8 o{static_cast<std::uint8_t>(s.colour[static_cast<size_t>(i)]),
-                      static_cast<std::uint8_t>(s.colour[static_cast<size_t>(i)] >> 8),
-                      static_cast<std::uint8_t>(s.colour[static_cast<size_t>(i)] >> 16), 255};
-        orow[i] = o;
-        continue;
-      }
       std::uint32_t px;
       if (s.written[static_cast<size_t>(i)]) {
         px = s.colour[static_cast<size_t>(i)];
