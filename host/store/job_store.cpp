@@ -67,9 +67,16 @@ CREATE TABLE IF NOT EXISTS job_stages (
 PRAGMA user_version = 1;
 )sql";
 
+// Columns added after the first schema: added in place to an older database on open.
+constexpr const char* kAddedColumns[][2] = {
+    {"content_hash", "TEXT NOT NULL DEFAULT ''"},
+    {"crash_count", "INTEGER NOT NULL DEFAULT 0"},
+    {"unclean_exits", "INTEGER NOT NULL DEFAULT 0"},
+};
+
 constexpr const char* kColumns =
     "id, name, package, out_dir, origin, state, stage, error, submitted_ms, updated_ms, last_acked_swath, "
-    "cancel_requested";
+    "cancel_requested, content_hash, crash_count, unclean_exits";
 
 JobRecord read_record(const Stmt& s) {
   JobRecord r;
@@ -85,6 +92,9 @@ JobRecord read_record(const Stmt& s) {
   r.updated_ms = s.i64(9);
   r.last_acked_swath = s.i64(10);
   r.cancel_requested = s.i64(11) != 0;
+  r.content_hash = s.text(12);
+  r.crash_count = static_cast<int>(s.i64(13));
+  r.unclean_exits = static_cast<int>(s.i64(14));
   return r;
 }
 
@@ -143,16 +153,25 @@ Result<JobStore> JobStore::open(const std::filesystem::path& db_path) {
   if (auto st = store.exec("PRAGMA journal_mode=WAL; PRAGMA synchronous=NORMAL; PRAGMA foreign_keys=ON;"); !st)
     return std::unexpected(st.error().with_context(db_path.string()));
   if (auto st = store.exec(kSchema); !st) return std::unexpected(st.error().with_context(db_path.string()));
+  for (const auto& [name, type] : kAddedColumns) {
+    Stmt probe(db, "SELECT 1 FROM pragma_table_info('jobs') WHERE name=?");
+    probe.bind(1, std::string(name));
+    if (probe.step() == SQLITE_ROW) continue;
+    if (auto st = store.exec(std::string("ALTER TABLE jobs ADD COLUMN ") + name + " " + type); !st)
+      return std::unexpected(st.error().with_context(db_path.string()));
+  }
   return store;
 }
 
 Result<std::int64_t> JobStore::enqueue(const std::string& name, const std::string& package,
-                                       const std::string& out_dir, const std::string& origin) {
-  Stmt s(db_, "INSERT INTO jobs(name, package, out_dir, origin, state, submitted_ms, updated_ms) "
-              "VALUES(?, ?, ?, ?, 'queued', ?, ?)");
+                                       const std::string& out_dir, const std::string& origin,
+                                       const std::string& content_hash) {
+  Stmt s(db_, "INSERT INTO jobs(name, package, out_dir, origin, state, submitted_ms, updated_ms, content_hash) "
+              "VALUES(?, ?, ?, ?, 'queued', ?, ?, ?)");
   if (!s.ok()) return fail(ErrorCode::kStore, "enqueue: " + s.error());
   std::int64_t t = now_ms();
   s.bind(1, name); s.bind(2, package); s.bind(3, out_dir); s.bind(4, origin); s.bind(5, t); s.bind(6, t);
+  s.bind(7, content_hash);
   if (s.step() != SQLITE_DONE) return fail(ErrorCode::kStore, "enqueue '" + name + "': " + s.error());
   return sqlite3_last_insert_rowid(db_);
 }
@@ -255,14 +274,74 @@ Result<JobState> JobStore::request_cancel(std::int64_t id) {
   return fail(ErrorCode::kJob, "job " + std::to_string(id) + " has already ended (" + std::string(to_string(st)) + ")");
 }
 
-Result<int> JobStore::requeue_interrupted() {
+Result<std::optional<JobRecord>> JobStore::find_live_by_hash(const std::string& content_hash) {
+  std::string sql = std::string("SELECT ") + kColumns +
+                    " FROM jobs WHERE content_hash=? AND content_hash<>'' AND state IN ('queued','running','done') "
+                    "ORDER BY id DESC LIMIT 1";
+  Stmt s(db_, sql.c_str());
+  if (!s.ok()) return fail(ErrorCode::kStore, "find by hash: " + s.error());
+  s.bind(1, content_hash);
+  int rc = s.step();
+  if (rc == SQLITE_DONE) return std::optional<JobRecord>{};
+  if (rc != SQLITE_ROW) return fail(ErrorCode::kStore, "find by hash: " + s.error());
+  return std::optional<JobRecord>(read_record(s));
+}
+
+Status JobStore::set_package(std::int64_t id, const std::string& package) {
+  Stmt s(db_, "UPDATE jobs SET package=?, updated_ms=? WHERE id=?");
+  if (!s.ok()) return fail(ErrorCode::kStore, "set_package: " + s.error());
+  s.bind(1, package); s.bind(2, now_ms()); s.bind(3, id);
+  if (s.step() != SQLITE_DONE) return fail(ErrorCode::kStore, "job " + std::to_string(id) + ": " + s.error());
+  return {};
+}
+
+Status JobStore::release(std::int64_t id) {
+  Stmt s(db_, "UPDATE jobs SET state='queued', updated_ms=? WHERE id=? AND state='running'");
+  if (!s.ok()) return fail(ErrorCode::kStore, "release: " + s.error());
+  s.bind(1, now_ms()); s.bind(2, id);
+  if (s.step() != SQLITE_DONE) return fail(ErrorCode::kStore, "job " + std::to_string(id) + ": " + s.error());
+  return {};
+}
+
+Result<JobState> JobStore::record_crash(std::int64_t id, const std::string& reason, int max_crashes) {
+  Stmt s(db_, "UPDATE jobs SET crash_count = crash_count + 1, updated_ms=?, "
+              "state = CASE WHEN cancel_requested THEN 'cancelled' WHEN crash_count + 1 >= ? THEN 'failed' "
+              "ELSE 'queued' END, "
+              "error = CASE WHEN crash_count + 1 >= ? THEN ? ELSE error END "
+              "WHERE id=? AND state IN ('running','queued') RETURNING state");
+  if (!s.ok()) return fail(ErrorCode::kStore, "record_crash: " + s.error());
+  s.bind(1, now_ms()); s.bind(2, static_cast<std::int64_t>(max_crashes)); s.bind(3, static_cast<std::int64_t>(max_crashes));
+  s.bind(4, reason); s.bind(5, id);
+  int rc = s.step();
+  if (rc == SQLITE_DONE) return fail(ErrorCode::kJob, "job " + std::to_string(id) + " is not running");
+  if (rc != SQLITE_ROW) return fail(ErrorCode::kStore, "job " + std::to_string(id) + ": " + s.error());
+  auto st = job_state_from_string(s.text(0)).value_or(JobState::kFailed);
+  while (s.step() == SQLITE_ROW) {}
+  return st;
+}
+
+Result<RequeueResult> JobStore::requeue_interrupted(int max_unclean_exits) {
+  RequeueResult out;
+  // Each job printd was running when it vanished counts one unclean exit.
+  Stmt count(db_, "UPDATE jobs SET unclean_exits = unclean_exits + 1 WHERE state='running' AND NOT cancel_requested");
+  if (!count.ok() || count.step() != SQLITE_DONE) return fail(ErrorCode::kStore, "requeue: " + count.error());
+  Stmt loop(db_, "UPDATE jobs SET state='failed', updated_ms=?, error='printd stopped ' || unclean_exits || "
+                 "' times while running this job (killed, out of memory or power lost); not retried again "
+                 "(printd --max-unclean-exits=' || ? || ')' WHERE state='running' AND NOT cancel_requested "
+                 "AND unclean_exits > ?");
+  if (!loop.ok()) return fail(ErrorCode::kStore, "requeue: " + loop.error());
+  loop.bind(1, now_ms()); loop.bind(2, static_cast<std::int64_t>(max_unclean_exits));
+  loop.bind(3, static_cast<std::int64_t>(max_unclean_exits));
+  if (loop.step() != SQLITE_DONE) return fail(ErrorCode::kStore, "requeue: " + loop.error());
+  out.failed = sqlite3_changes(db_);
   // A job whose cancel was asked for before the restart stays cancelled, not re-run.
   Stmt s(db_, "UPDATE jobs SET state = CASE WHEN cancel_requested THEN 'cancelled' ELSE 'queued' END, "
               "updated_ms=? WHERE state='running'");
   if (!s.ok()) return fail(ErrorCode::kStore, "requeue: " + s.error());
   s.bind(1, now_ms());
   if (s.step() != SQLITE_DONE) return fail(ErrorCode::kStore, "requeue: " + s.error());
-  return sqlite3_changes(db_);
+  out.requeued = sqlite3_changes(db_);
+  return out;
 }
 
 }  // namespace tp::host

@@ -32,6 +32,15 @@ struct JobRecord {
   std::int64_t updated_ms = 0;
   std::int64_t last_acked_swath = -1;  ///< print checkpoint: highest swath the printer acknowledged
   bool cancel_requested = false;
+  std::string content_hash;          ///< SHA-256 of the package as submitted (idempotent submit)
+  int crash_count = 0;               ///< times printd died of a fatal signal while running it
+  int unclean_exits = 0;             ///< times printd vanished (kill -9, power loss) while running it
+};
+
+/// What requeue_interrupted did at start-up.
+struct RequeueResult {
+  int requeued = 0;                  ///< back to "queued", resuming from their checkpoints
+  int failed = 0;                    ///< over the unclean-exit limit: marked failed, not retried
 };
 
 /// Stage state of one job (PrusaSlicer's PrintState idea: one home for progress and resume).
@@ -52,7 +61,13 @@ class JobStore {
   [[nodiscard]] static Result<JobStore> open(const std::filesystem::path& db_path);
 
   [[nodiscard]] Result<std::int64_t> enqueue(const std::string& name, const std::string& package,
-                                             const std::string& out_dir, const std::string& origin);
+                                             const std::string& out_dir, const std::string& origin,
+                                             const std::string& content_hash = {});
+  /// The newest job with this content hash that is queued, running or done (a retry of the same
+  /// submit finds it and does not print twice), or nullopt.
+  [[nodiscard]] Result<std::optional<JobRecord>> find_live_by_hash(const std::string& content_hash);
+  /// Changes where a job's spooled package lives (after it was moved into the spool).
+  [[nodiscard]] Status set_package(std::int64_t id, const std::string& package);
   /// Atomically takes the oldest queued job and marks it running.
   [[nodiscard]] Result<std::optional<JobRecord>> claim_next();
   [[nodiscard]] Result<std::optional<JobRecord>> get(std::int64_t id);
@@ -66,8 +81,17 @@ class JobStore {
   /// Queued jobs become cancelled at once; a running job gets cancel_requested for its worker.
   /// Fails with kJob if the job does not exist or has already ended.
   [[nodiscard]] Result<JobState> request_cancel(std::int64_t id);
-  /// After a crash or restart: jobs left "running" go back to "queued", keeping their checkpoint.
-  [[nodiscard]] Result<int> requeue_interrupted();
+  /// A job the daemon stopped cleanly (shutdown) goes back to "queued" with its checkpoint.
+  [[nodiscard]] Status release(std::int64_t id);
+  /// printd died of a fatal signal while running job `id` (its crash marker says so): counts the
+  /// crash; at `max_crashes` the job is marked failed with `reason`, else it is queued again.
+  /// Returns the job's state afterwards.
+  [[nodiscard]] Result<JobState> record_crash(std::int64_t id, const std::string& reason, int max_crashes);
+  /// After printd vanished (kill -9, power loss): jobs left "running" count an unclean exit and go
+  /// back to "queued" with their checkpoint, unless they have now vanished more than
+  /// `max_unclean_exits` times, which marks them failed (a crash loop). Cancel requests made
+  /// before the restart make them cancelled.
+  [[nodiscard]] Result<RequeueResult> requeue_interrupted(int max_unclean_exits = 3);
 
  private:
   explicit JobStore(sqlite3* db) : db_(db) {}

@@ -40,7 +40,8 @@ TEST(JobStore, InterruptedJobIsRequeuedWithItsCheckpoint) {
   ASSERT_TRUE(store->set_checkpoint(*id, 41));
   auto n = store->requeue_interrupted();
   ASSERT_TRUE(n);
-  EXPECT_EQ(*n, 1);
+  EXPECT_EQ(n->requeued, 1);
+  EXPECT_EQ(n->failed, 0);
   auto rec = store->get(*id);
   ASSERT_TRUE(rec && *rec);
   EXPECT_EQ((*rec)->state, JobState::kQueued);
@@ -90,6 +91,70 @@ TEST(JobStore, StagesAreRecordedInOrder) {
   EXPECT_EQ((*st)[1].state, "done");
   EXPECT_DOUBLE_EQ((*st)[1].seconds, 3.0);
   EXPECT_EQ((*store->get(*id))->stage, "print");
+}
+
+TEST(JobStore, FatalCrashMarksTheJobFailedInsteadOfRequeueingIt) {
+  auto dir = tp::test::scratch_dir("store-crash");
+  auto store = JobStore::open(dir / "jobs.db");
+  ASSERT_TRUE(store);
+  auto id = store->enqueue("a", "p", "o", "cli");
+  ASSERT_TRUE(store->claim_next());
+  auto st = store->record_crash(*id, "printd crashed (SIGABRT) in stage outputs", 1);
+  ASSERT_TRUE(st) << st.error().message;
+  EXPECT_EQ(*st, JobState::kFailed);
+  auto rec = store->get(*id);
+  EXPECT_EQ((*rec)->crash_count, 1);
+  EXPECT_EQ((*rec)->error, "printd crashed (SIGABRT) in stage outputs");
+  // Nothing left running, so a restart queues nothing: no crash loop.
+  auto n = store->requeue_interrupted();
+  ASSERT_TRUE(n);
+  EXPECT_EQ(n->requeued, 0);
+  EXPECT_EQ((*store->get(*id))->state, JobState::kFailed);
+  // With a higher limit the first crash re-queues it.
+  auto b = store->enqueue("b", "p", "o", "cli");
+  ASSERT_TRUE(store->claim_next());
+  EXPECT_EQ(*store->record_crash(*b, "x", 2), JobState::kQueued);
+}
+
+TEST(JobStore, RepeatedUncleanExitsEndInFailedNotALoop) {
+  auto dir = tp::test::scratch_dir("store-unclean");
+  auto store = JobStore::open(dir / "jobs.db");
+  ASSERT_TRUE(store);
+  auto id = store->enqueue("a", "p", "o", "cli");
+  for (int restart = 1; restart <= 2; ++restart) {
+    ASSERT_TRUE(store->claim_next());
+    auto n = store->requeue_interrupted(2);
+    ASSERT_TRUE(n);
+    EXPECT_EQ(n->requeued, 1) << restart;
+  }
+  ASSERT_TRUE(store->claim_next());
+  auto n = store->requeue_interrupted(2);
+  ASSERT_TRUE(n);
+  EXPECT_EQ(n->failed, 1);
+  auto rec = store->get(*id);
+  EXPECT_EQ((*rec)->state, JobState::kFailed);
+  EXPECT_EQ((*rec)->unclean_exits, 3);
+  EXPECT_NE((*rec)->error.find("--max-unclean-exits=2"), std::string::npos) << (*rec)->error;
+  // A clean shutdown releases the job without counting.
+  auto b = store->enqueue("b", "p", "o", "cli");
+  ASSERT_TRUE(store->claim_next());
+  ASSERT_TRUE(store->release(*b));
+  EXPECT_EQ((*store->get(*b))->state, JobState::kQueued);
+  EXPECT_EQ((*store->get(*b))->unclean_exits, 0);
+}
+
+TEST(JobStore, LiveJobIsFoundByContentHash) {
+  auto dir = tp::test::scratch_dir("store-hash");
+  auto store = JobStore::open(dir / "jobs.db");
+  ASSERT_TRUE(store);
+  auto id = store->enqueue("a", "p", "o", "socket", "abc123");
+  auto found = store->find_live_by_hash("abc123");
+  ASSERT_TRUE(found && *found);
+  EXPECT_EQ((*found)->id, *id);
+  EXPECT_FALSE(*store->find_live_by_hash(""));
+  // A failed job is not a reason to refuse a retry.
+  ASSERT_TRUE(store->set_state(*id, JobState::kFailed, "x"));
+  EXPECT_FALSE(*store->find_live_by_hash("abc123"));
 }
 
 TEST(JobStore, UnopenableDatabaseIsReported) {
