@@ -4,6 +4,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "host/job/design_limits.h"
 #include "host/job/internal/field_reader.h"
 
 namespace tp::host {
@@ -255,13 +256,25 @@ Result<Job> parse_job(const std::string& text, const JobPackage* pkg) {
 }
 
 Result<Job> load_job(const JobPackage& package) {
-  std::ifstream in(package.root() / "job.json", std::ios::binary);
-  if (!in) return fail(ErrorCode::kIo, (package.root() / "job.json").string() + ": cannot read");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  std::string text = ss.str();
-  if (text.size() > (16u << 20)) return fail(ErrorCode::kValidation, "job.json: larger than 16 MiB");
-  return parse_job(text, &package);
+  const fs::path path = package.root() / "job.json";
+  const std::uint64_t cap = package.limits().max_manifest_bytes;
+  // The size is checked before a byte is read, and the read itself is capped (the file may grow).
+  std::error_code ec;
+  const auto bytes = fs::file_size(path, ec);
+  if (ec) return fail(ErrorCode::kIo, path.string() + ": " + ec.message());
+  const std::string too_big = "job.json: " + std::to_string(bytes) + " bytes, over the limit of " + std::to_string(cap) +
+                              " (max_manifest_bytes; raise it with --limit max_manifest_bytes=N)";
+  if (bytes > cap) return fail(ErrorCode::kValidation, too_big);
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return fail(ErrorCode::kIo, path.string() + ": cannot read");
+  std::string text(static_cast<size_t>(bytes) + 1, '\0');
+  in.read(text.data(), static_cast<std::streamsize>(text.size()));
+  text.resize(static_cast<size_t>(in.gcount()));
+  if (text.size() > cap) return fail(ErrorCode::kValidation, too_big);
+  auto job = parse_job(text, &package);
+  if (!job) return job;
+  if (auto st = check_design_limits(*job, package.limits()); !st) return std::unexpected(st.error());
+  return job;
 }
 
 }  // namespace tp::host

@@ -1,6 +1,8 @@
 // host/job/package.cpp: opening job packages and resolving their assets without escaping them.
 #include "host/job/package.h"
 
+#include <algorithm>
+#include <cstdlib>
 #include <system_error>
 
 namespace tp::host {
@@ -22,10 +24,62 @@ Status check_relative_path(const std::string& relative) {
   return {};
 }
 
+namespace {
+
+struct LimitField {
+  const char* name;
+  std::uint64_t PackageLimits::*field;
+};
+constexpr LimitField kLimitFields[] = {
+    {"max_zip_bytes", &PackageLimits::max_total_bytes},      {"max_zip_entry_bytes", &PackageLimits::max_entry_bytes},
+    {"max_manifest_bytes", &PackageLimits::max_manifest_bytes}, {"max_asset_bytes", &PackageLimits::max_asset_bytes},
+    {"max_layers", &PackageLimits::max_design_layers},       {"max_stroke_points", &PackageLimits::max_stroke_points},
+    {"max_source_pixels", &PackageLimits::max_source_pixels}, {"max_memory_bytes", &PackageLimits::max_memory_bytes},
+};
+
+}  // namespace
+
+Status set_limit(PackageLimits& limits, const std::string& spec) {
+  const auto eq = spec.find('=');
+  const std::string name = spec.substr(0, eq);
+  std::string known = "max_zip_entries, max_zip_ratio";
+  for (const auto& f : kLimitFields) known += std::string(", ") + f.name;
+  if (eq == std::string::npos)
+    return fail(ErrorCode::kInvalidArgument, "--limit " + spec + ": expected NAME=VALUE (" + known + ")");
+  const std::string value = spec.substr(eq + 1);
+  char* end = nullptr;
+  const double v = std::strtod(value.c_str(), &end);
+  if (value.empty() || *end != '\0' || !(v > 0) || v > 1e18)
+    return fail(ErrorCode::kInvalidArgument, "--limit " + spec + ": the value must be a positive number");
+  if (name == "max_zip_ratio") {
+    limits.max_ratio = v;
+    return {};
+  }
+  if (name == "max_zip_entries") {
+    limits.max_entries = static_cast<std::uint32_t>(std::min(v, 4e9));
+    return {};
+  }
+  for (const auto& f : kLimitFields) {
+    if (name == f.name) {
+      limits.*f.field = static_cast<std::uint64_t>(v);
+      return {};
+    }
+  }
+  return fail(ErrorCode::kInvalidArgument, "--limit " + spec + ": unknown limit \"" + name + "\" (" + known + ")");
+}
+
+std::string describe_limits(const PackageLimits& limits) {
+  std::string out = "max_zip_entries=" + std::to_string(limits.max_entries) +
+                    " max_zip_ratio=" + std::to_string(static_cast<int>(limits.max_ratio));
+  for (const auto& f : kLimitFields) out += std::string(" ") + f.name + "=" + std::to_string(limits.*f.field);
+  return out;
+}
+
 Result<JobPackage> JobPackage::open(const fs::path& path, const fs::path& unpack_dir, const PackageLimits& limits) {
   std::error_code ec;
   JobPackage pkg;
   pkg.source_ = path;
+  pkg.limits_ = limits;
   if (fs::is_directory(path, ec)) {
     pkg.root_ = fs::canonical(path, ec);
     if (ec) return fail(ErrorCode::kJob, path.string() + ": " + ec.message());
@@ -51,8 +105,14 @@ Result<JobPackage> JobPackage::open(const fs::path& path, const fs::path& unpack
   } else {
     return fail(ErrorCode::kJob, path.string() + ": no such job (expected a folder or a .zip)");
   }
-  if (!fs::is_regular_file(pkg.root_ / "job.json"))
-    return fail(ErrorCode::kJob, path.string() + ": job.json is missing");
+  // job.json itself must be a plain file of the package: a symlink could point anywhere.
+  const auto manifest = fs::symlink_status(pkg.root_ / "job.json", ec);
+  if (fs::is_symlink(manifest))
+    return fail(ErrorCode::kUnsafePath, path.string() + ": job.json is a symbolic link (it must be a regular file "
+                                                        "inside the package)");
+  if (!fs::exists(manifest)) return fail(ErrorCode::kJob, path.string() + ": job.json is missing");
+  if (!fs::is_regular_file(manifest))
+    return fail(ErrorCode::kJob, path.string() + ": job.json is not a regular file");
   return pkg;
 }
 
@@ -71,6 +131,12 @@ Result<fs::path> JobPackage::resolve_asset(const std::string& relative, const st
     return fail(ErrorCode::kUnsafePath, where + "asset \"" + relative + "\" is a link that leaves the package");
   if (!fs::is_regular_file(real, ec))
     return fail(ErrorCode::kValidation, where + "asset \"" + relative + "\" is not a regular file");
+  // Sizes are checked before anything reads the file.
+  const auto bytes = fs::file_size(real, ec);
+  if (!ec && bytes > limits_.max_asset_bytes)
+    return fail(ErrorCode::kValidation, where + "asset \"" + relative + "\" is " + std::to_string(bytes) +
+                                            " bytes, over the limit of " + std::to_string(limits_.max_asset_bytes) +
+                                            " (max_asset_bytes; raise it with --limit max_asset_bytes=N)");
   return real;
 }
 

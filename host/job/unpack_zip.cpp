@@ -54,9 +54,13 @@ Status unpack_zip(const fs::path& zip_path, const fs::path& dest, const PackageL
     if (zip_file_get_external_attributes(z.get(), static_cast<zip_uint64_t>(i), 0, &opsys, &attr) == 0 &&
         opsys == ZIP_OPSYS_UNIX) {
       mode_t mode = static_cast<mode_t>(attr >> 16);
-      if (S_ISLNK(mode)) return fail(ErrorCode::kUnsafePath, ectx + " is a symbolic link");
-      if (mode != 0 && !S_ISREG(mode) && !S_ISDIR(mode))
-        return fail(ErrorCode::kUnsafePath, ectx + " is not a regular file or folder");
+      // Writers such as Python's zipfile.writestr store permission bits without a file type
+      // (0600): such an entry is a plain file (or a folder, by its trailing '/').
+      if ((mode & S_IFMT) != 0) {
+        if (S_ISLNK(mode)) return fail(ErrorCode::kUnsafePath, ectx + " is a symbolic link");
+        if (!S_ISREG(mode) && !S_ISDIR(mode))
+          return fail(ErrorCode::kUnsafePath, ectx + " is not a regular file or folder");
+      }
     }
     std::string rel = name;
     bool is_dir = !rel.empty() && rel.back() == '/';
@@ -93,10 +97,12 @@ Status unpack_zip(const fs::path& zip_path, const fs::path& dest, const PackageL
       total_out += static_cast<std::uint64_t>(got);
       if (entry_out > limits.max_entry_bytes)
         return fail(ErrorCode::kArchive, ectx + " inflates past the per-file limit of " +
-                                             std::to_string(limits.max_entry_bytes) + " bytes");
+                                             std::to_string(limits.max_entry_bytes) +
+                                             " bytes (max_zip_entry_bytes; raise it with --limit max_zip_entry_bytes=N)");
       if (total_out > limits.max_total_bytes)
         return fail(ErrorCode::kArchive, ctx + ": archive inflates past the limit of " +
-                                             std::to_string(limits.max_total_bytes) + " bytes");
+                                             std::to_string(limits.max_total_bytes) +
+                                             " bytes (max_zip_bytes; raise it with --limit max_zip_bytes=N)");
       // Ratio checks only bite past 1 MiB, so small highly compressible files stay fine.
       if (entry_out > (1u << 20) && entry_out > limits.max_ratio * static_cast<double>(compressed + 1))
         return fail(ErrorCode::kArchive, ectx + " has a compression ratio over " +
