@@ -8,6 +8,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <chrono>
 #include <cstring>
 #include <utility>
 
@@ -15,7 +16,7 @@ namespace tp::host {
 
 namespace {
 
-constexpr size_t kMaxLineBytes = 1 << 20;
+constexpr size_t kMaxReplyBytes = 64 << 20;
 
 Result<sockaddr_un> make_addr(const std::filesystem::path& path) {
   sockaddr_un addr{};
@@ -28,14 +29,17 @@ Result<sockaddr_un> make_addr(const std::filesystem::path& path) {
   return addr;
 }
 
-// Reads until '\n' (not included) or EOF, bounded in size and time.
-Result<std::string> read_line(int fd, int timeout_ms) {
+// Reads until '\n' (not included) or EOF, bounded in size and in total time (a client that
+// trickles one byte at a time is cut off at the deadline like one that sends nothing).
+Result<std::string> read_line(int fd, int timeout_ms, size_t max_bytes, const char* what) {
   std::string line;
   char buf[4096];
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::milliseconds(timeout_ms);
   for (;;) {
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
     pollfd p{fd, POLLIN, 0};
-    int r = ::poll(&p, 1, timeout_ms);
-    if (r == 0) return fail(ErrorCode::kDaemon, "timed out waiting for a reply");
+    int r = left.count() <= 0 ? 0 : ::poll(&p, 1, static_cast<int>(left.count()));
+    if (r == 0) return fail(ErrorCode::kDaemon, std::string("timed out after ") + std::to_string(timeout_ms) + " ms waiting for " + what);
     if (r < 0) {
       if (errno == EINTR) continue;
       return fail(ErrorCode::kDaemon, std::string("poll: ") + std::strerror(errno));
@@ -50,7 +54,8 @@ Result<std::string> read_line(int fd, int timeout_ms) {
       if (buf[i] == '\n') return line;
       line += buf[i];
     }
-    if (line.size() > kMaxLineBytes) return fail(ErrorCode::kDaemon, "request line too long");
+    if (line.size() > max_bytes)
+      return fail(ErrorCode::kDaemon, std::string(what) + " longer than " + std::to_string(max_bytes) + " bytes");
   }
 }
 
@@ -60,6 +65,11 @@ bool write_all(int fd, const std::string& data) {
     ssize_t n = ::send(fd, data.data() + off, data.size() - off, MSG_NOSIGNAL);
     if (n < 0) {
       if (errno == EINTR) continue;
+      if (errno == EAGAIN || errno == EWOULDBLOCK) {
+        // A non-blocking client socket whose buffer is full: wait a little for the reader.
+        pollfd p{fd, POLLOUT, 0};
+        if (::poll(&p, 1, 2000) > 0) continue;
+      }
       return false;
     }
     off += static_cast<size_t>(n);
@@ -85,23 +95,27 @@ Result<std::string> socket_request(const std::filesystem::path& socket_path, con
     return fail(ErrorCode::kDaemon, socket_path.string() + ": no daemon is listening (" + std::strerror(e) +
                                         "); start it with printd");
   }
-  auto reply = write_all(fd, request + "\n") ? read_line(fd, timeout_ms)
+  auto reply = write_all(fd, request + "\n") ? read_line(fd, timeout_ms, kMaxReplyBytes, "a reply")
                                              : Result<std::string>(fail(ErrorCode::kDaemon, "send failed"));
   ::close(fd);
   return reply;
 }
 
 ControlSocket::ControlSocket(ControlSocket&& o) noexcept
-    : fd_(std::exchange(o.fd_, -1)), path_(std::move(o.path_)) {}
+    : fd_(std::exchange(o.fd_, -1)), path_(std::move(o.path_)), clients_(std::move(o.clients_)) {}
 ControlSocket& ControlSocket::operator=(ControlSocket&& o) noexcept {
   if (this != &o) {
+    reap(true);
     if (fd_ >= 0) { ::close(fd_); ::unlink(path_.c_str()); }
     fd_ = std::exchange(o.fd_, -1);
     path_ = std::move(o.path_);
+    clients_ = std::move(o.clients_);
   }
   return *this;
 }
 ControlSocket::~ControlSocket() {
+  // Every client thread ends within its request timeout plus its handler's time.
+  reap(true);
   if (fd_ >= 0) {
     ::close(fd_);
     ::unlink(path_.c_str());
@@ -117,9 +131,9 @@ Result<ControlSocket> ControlSocket::listen(const std::filesystem::path& path) {
       return fail(ErrorCode::kDaemon, path.string() + ": another printd is already running here");
     ::unlink(path.c_str());
   }
-  int fd = ::socket(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0);
+  int fd = ::socket(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC | SOCK_NONBLOCK, 0);
   if (fd < 0) return fail(ErrorCode::kDaemon, std::string("socket: ") + std::strerror(errno));
-  if (::bind(fd, reinterpret_cast<const sockaddr*>(&*addr), sizeof *addr) != 0 || ::listen(fd, 16) != 0) {
+  if (::bind(fd, reinterpret_cast<const sockaddr*>(&*addr), sizeof *addr) != 0 || ::listen(fd, 64) != 0) {
     int e = errno;
     ::close(fd);
     return fail(ErrorCode::kDaemon, path.string() + ": cannot listen: " + std::strerror(e));
@@ -131,15 +145,59 @@ Result<ControlSocket> ControlSocket::listen(const std::filesystem::path& path) {
   return s;
 }
 
-bool ControlSocket::serve_one(int timeout_ms, const std::function<std::string(const std::string&)>& handler) {
+void ControlSocket::reap(bool all) {
+  for (auto it = clients_.begin(); it != clients_.end();) {
+    if (all || it->done->load()) {
+      if (it->thread.joinable()) it->thread.join();
+      it = clients_.erase(it);
+    } else {
+      ++it;
+    }
+  }
+}
+
+int ControlSocket::active_clients() const {
+  int n = 0;
+  for (const auto& c : clients_) n += c.done->load() ? 0 : 1;
+  return n;
+}
+
+int ControlSocket::serve(int timeout_ms, const std::function<std::string(const std::string&)>& handler,
+                         const ClientLimits& limits) {
+  reap(false);
   pollfd p{fd_, POLLIN, 0};
-  if (::poll(&p, 1, timeout_ms) <= 0) return false;
-  int c = ::accept4(fd_, nullptr, nullptr, SOCK_CLOEXEC);
-  if (c < 0) return false;
-  auto line = read_line(c, 5000);
-  if (line) write_all(c, handler(*line) + "\n");
-  ::close(c);
-  return true;
+  if (::poll(&p, 1, timeout_ms) <= 0) return 0;
+  int accepted = 0;
+  // Take every client waiting now; the listening socket is non-blocking for this loop.
+  for (;;) {
+    int c = ::accept4(fd_, nullptr, nullptr, SOCK_CLOEXEC | SOCK_NONBLOCK);
+    if (c < 0) break;
+    ++accepted;
+    if (active_clients() >= limits.max_clients) {
+      write_all(c, std::string(R"({"ok":false,"error":"printd is busy: )") + std::to_string(limits.max_clients) +
+                       " clients are being served; try again\"}\n");
+      ::close(c);
+      continue;
+    }
+    auto done = std::make_shared<std::atomic<bool>>(false);
+    std::thread t([c, done, &handler, limits] {
+      auto line = read_line(c, limits.request_timeout_ms, limits.max_request_bytes, "a request line");
+      std::string reply;
+      if (line) {
+        reply = handler(*line);
+      } else {
+        reply = std::string(R"({"ok":false,"error":")") + line.error().message + "; connection dropped\"}";
+      }
+      // The client gets the rest of its time budget to take the reply; a full socket buffer
+      // of a client that does not read must not hold this thread for ever.
+      pollfd wp{c, POLLOUT, 0};
+      if (::poll(&wp, 1, limits.request_timeout_ms) > 0) write_all(c, reply + "\n");
+      ::close(c);
+      done->store(true);
+    });
+    clients_.push_back(Client{std::move(t), done});
+  }
+  return accepted;
 }
 
 }  // namespace tp::host

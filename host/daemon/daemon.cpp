@@ -4,15 +4,18 @@
 #include <spdlog/spdlog.h>
 
 #include <condition_variable>
-#include <fstream>
 #include <mutex>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <thread>
 
-#include "host/daemon/control_socket.h"
+#include "host/common/atomic_file.h"
+#include "host/common/failure_report.h"
+#include "host/common/text.h"
+#include "host/daemon/crash_guard.h"
 #include "host/daemon/hot_folder.h"
 #include "host/daemon/intake.h"
+#include "host/daemon/requests/request_handler.h"
 #include "host/pipeline/run_job.h"
 #include "host/store/job_store.h"
 
@@ -25,34 +28,55 @@ namespace {
 
 const std::string kHotOrigin = "hot-folder:";
 
-json record_json(const JobRecord& r) {
-  return {{"id", r.id},           {"name", r.name},       {"state", std::string(to_string(r.state))},
-          {"stage", r.stage},     {"error", r.error},     {"out_dir", r.out_dir},
-          {"origin", r.origin},   {"submitted_ms", r.submitted_ms}, {"updated_ms", r.updated_ms},
-          {"last_acked_swath", r.last_acked_swath}, {"cancel_requested", r.cancel_requested}};
+// The state directory and what is in it are the daemon's alone (jobs may be confidential).
+Status make_state_dirs(const std::vector<fs::path>& dirs) {
+  std::error_code ec;
+  for (const auto& d : dirs) {
+    fs::create_directories(d, ec);
+    if (ec) return fail(ErrorCode::kDaemon, d.string() + ": " + ec.message());
+    fs::permissions(d, fs::perms::owner_all, ec);
+    if (ec) return fail(ErrorCode::kDaemon, d.string() + ": cannot make it private (0700): " + ec.message());
+  }
+  return {};
 }
 
-// The daemon's shared state between the main loop and the worker.
+void write_error_txt(const fs::path& path, const std::string& error) {
+  if (auto st = write_file_atomic(path, error + "\n"); !st) spdlog::warn("printd: {}", st.error().message);
+}
+
+// The daemon's shared state between the main loop, the socket's client threads and the worker.
 class Daemon {
  public:
   Daemon(const DaemonConfig& cfg, const std::atomic<bool>& stop) : cfg_(cfg), stop_(stop) {}
 
   Status run() {
+    if (auto st = make_state_dirs({cfg_.state_dir, spool_dir()}); !st) return st;
     std::error_code ec;
-    for (const auto& d : {cfg_.state_dir, spool_dir(), cfg_.out_dir}) {
-      fs::create_directories(d, ec);
-      if (ec) return fail(ErrorCode::kDaemon, d.string() + ": " + ec.message());
-    }
-    auto store = JobStore::open(cfg_.state_dir / "jobs.db");
+    fs::create_directories(cfg_.out_dir, ec);
+    if (ec) return fail(ErrorCode::kDaemon, cfg_.out_dir.string() + ": " + ec.message());
+    auto store = JobStore::open(db_path());
     if (!store) return std::unexpected(store.error());
-    if (auto n = store->requeue_interrupted(); n && *n > 0)
-      spdlog::info("printd: {} interrupted job(s) queued again, resuming from their checkpoints", *n);
+    for (const char* suffix : {"", "-wal", "-shm"}) {
+      fs::path f = db_path();
+      f += suffix;
+      if (fs::exists(f, ec)) fs::permissions(f, fs::perms::owner_read | fs::perms::owner_write, ec);
+    }
+    recover(*store);
+    install_crash_guard(crash_marker_path());
+
+    // Each socket client runs on its own thread with its own store connection (declared before
+    // the socket, whose destructor waits for those threads).
+    const auto handler = [this](const std::string& req) {
+      auto client_store = JobStore::open(db_path());
+      if (!client_store) return dump_json(json{{"ok", false}, {"error", client_store.error().message}});
+      return handle_request(*client_store, req, hooks(*client_store));
+    };
     fs::path sock_path = cfg_.socket_path.empty() ? default_socket_path(cfg_.state_dir) : cfg_.socket_path;
     auto sock = ControlSocket::listen(sock_path);
     if (!sock) return std::unexpected(sock.error());
     std::optional<HotFolder> hot;
     if (!cfg_.hot_folder.empty()) {
-      hot.emplace(cfg_.hot_folder);
+      hot.emplace(cfg_.hot_folder, std::chrono::milliseconds(cfg_.hot_folder_settle_ms));
       if (!hot->prepare()) return fail(ErrorCode::kDaemon, cfg_.hot_folder.string() + ": cannot create hot folder");
     }
     spdlog::info("printd: listening on {}{}", sock_path.string(),
@@ -60,7 +84,7 @@ class Daemon {
 
     std::thread worker([this] { work(); });
     while (!stop_.load()) {
-      sock->serve_one(cfg_.hot_folder_poll_ms, [&](const std::string& req) { return handle(*store, req); });
+      sock->serve(cfg_.hot_folder_poll_ms, handler, cfg_.clients);
       if (hot) {
         for (const fs::path& entry : hot->scan()) take_from_hot_folder(*store, *hot, entry);
       }
@@ -77,86 +101,103 @@ class Daemon {
 
  private:
   fs::path spool_dir() const { return cfg_.state_dir / "spool"; }
+  fs::path db_path() const { return cfg_.state_dir / "jobs.db"; }
+  fs::path crash_marker_path() const { return cfg_.state_dir / "crash.marker"; }
 
-  // Queues a checked package: copies or moves it into the spool, records it.
-  Result<std::int64_t> enqueue(JobStore& store, const CheckedPackage& pkg, bool move, const std::string& origin) {
-    fs::path spooled = unique_child(spool_dir(), pkg.job_name + pkg.path.extension().string());
-    if (auto st = transfer_tree(pkg.path, spooled, move); !st) return std::unexpected(st.error());
-    fs::path out = unique_child(cfg_.out_dir, pkg.job_name);
-    auto id = store.enqueue(pkg.job_name, spooled.string(), out.string(), origin);
-    if (id) {
-      spdlog::info("printd: job {} '{}' queued from {}", *id, pkg.job_name, origin);
-      wake_.notify_all();
+  // A job that was running when printd died: failed if printd crashed on it, else resumed.
+  void recover(JobStore& store) {
+    if (auto m = take_crash_marker(crash_marker_path())) {
+      auto rec = store.get(m->job_id);
+      const std::string stage = rec && *rec ? (*rec)->stage : std::string("?");
+      const std::string reason = "printd crashed (" + signal_name(m->signal) + ") while running this job, in stage " +
+                                 stage + "; not retried (printd --max-crashes=" + std::to_string(cfg_.max_crashes) + ")";
+      auto st = store.record_crash(m->job_id, reason, cfg_.max_crashes);
+      if (st && *st == JobState::kFailed) {
+        spdlog::error("printd: job {}: {}", m->job_id, reason);
+        if (rec && *rec) finish_files(**rec, JobState::kFailed, reason);
+      } else if (st) {
+        spdlog::warn("printd: job {} crashed printd ({}); queued again", m->job_id, signal_name(m->signal));
+      }
     }
+    auto n = store.requeue_interrupted(cfg_.max_unclean_exits);
+    if (n && n->requeued > 0)
+      spdlog::info("printd: {} interrupted job(s) queued again, resuming from their checkpoints", n->requeued);
+    if (n && n->failed > 0)
+      spdlog::error("printd: {} job(s) failed: printd stopped more than {} times while running them", n->failed,
+                    cfg_.max_unclean_exits);
+  }
+
+  RequestHooks hooks(JobStore& store) {
+    RequestHooks h;
+    h.submit = [this, &store](const fs::path& package, bool reprint) -> Result<json> {
+      auto checked = check_package(package, spool_dir(), cfg_.limits);
+      if (!checked) return std::unexpected(checked.error());
+      // One submit at a time between the duplicate check and the insert.
+      std::lock_guard lock(submit_mu_);
+      if (!reprint) {
+        auto dup = store.find_live_by_hash(checked->content_hash);
+        if (!dup) return std::unexpected(dup.error());
+        if (*dup)
+          return json{{"id", (*dup)->id}, {"name", printable_utf8((*dup)->name)}, {"duplicate", true},
+                      {"state", std::string(to_string((*dup)->state))}};
+      }
+      auto id = enqueue(store, *checked, false, "socket");
+      if (!id) return std::unexpected(id.error());
+      return json{{"id", *id}, {"name", checked->job_name}, {"duplicate", false}};
+    };
+    h.cancel_running = [this](std::int64_t id) {
+      std::lock_guard lock(mu_);
+      if (running_id_ == id && running_cancel_) running_cancel_->cancel();
+    };
+    h.cancelled_queued = [this, &store](std::int64_t id) {
+      if (auto rec = store.get(id); rec && *rec) finish_files(**rec, JobState::kCancelled, "cancelled before it ran");
+    };
+    return h;
+  }
+
+  // Queues a checked package: copies or moves it into the spool under a name no other job has.
+  Result<std::int64_t> enqueue(JobStore& store, const CheckedPackage& pkg, bool move, const std::string& origin) {
+    fs::path spooled;
+    {
+      std::lock_guard lock(spool_mu_);
+      spooled = unique_child(spool_dir(), pkg.content_hash.substr(0, 12) + "-" + pkg.job_name +
+                                              (fs::is_directory(pkg.path) ? "" : pkg.path.extension().string()));
+      if (auto st = transfer_tree(pkg.path, spooled, move); !st) return std::unexpected(st.error());
+    }
+    make_private(spooled);
+    fs::path out;
+    {
+      std::lock_guard lock(spool_mu_);
+      out = unique_child(cfg_.out_dir, pkg.job_name);
+      std::error_code ec;
+      fs::create_directories(out, ec);  // claims the name before another job takes it
+    }
+    auto id = store.enqueue(pkg.job_name, spooled.string(), out.string(), origin, pkg.content_hash);
+    if (!id) {
+      remove_spooled(spooled);
+      return id;
+    }
+    spdlog::info("printd: job {} '{}' queued from {}", *id, pkg.job_name, printable_utf8(origin));
+    wake_.notify_all();
     return id;
   }
 
   void take_from_hot_folder(JobStore& store, const HotFolder& hot, const fs::path& entry) {
-    auto checked = check_package(entry, spool_dir());
+    const std::string name = entry.filename().string();
+    auto checked = check_package(entry, spool_dir(), cfg_.limits);
     if (!checked) {
-      spdlog::warn("printd: {} refused: {}", entry.filename().string(), checked.error().message);
-      fs::path dest = unique_child(hot.failed_dir(), entry.filename().string());
-      if (transfer_tree(entry, dest / entry.filename(), true))
-        std::ofstream(dest / "error.txt") << checked.error().message << "\n";
+      spdlog::warn("printd: {} refused: {}", printable_utf8(name), checked.error().message);
+      fs::path dest = unique_child(hot.failed_dir(), name);
+      if (transfer_tree(entry, dest / entry.filename(), true)) write_error_txt(dest / "error.txt", checked.error().message);
       return;
     }
-    if (auto id = enqueue(store, *checked, true, kHotOrigin + entry.filename().string()); !id)
-      spdlog::error("printd: {}: {}", entry.string(), id.error().message);
-  }
-
-  std::string handle(JobStore& store, const std::string& request) {
-    json req = json::parse(request, nullptr, false);
-    if (req.is_discarded() || !req.is_object() || !req.contains("op") || !req["op"].is_string())
-      return json{{"ok", false}, {"error", "request must be a JSON object with \"op\""}}.dump();
-    const std::string op = req["op"];
-    auto err = [](const std::string& m) { return json{{"ok", false}, {"error", m}}.dump(); };
-    if (op == "ping") return json{{"ok", true}}.dump();
-    if (op == "submit") {
-      if (!req.contains("package") || !req["package"].is_string()) return err("submit needs \"package\": a path");
-      fs::path p = req["package"].get<std::string>();
-      if (!p.is_absolute()) return err("submit: package path must be absolute");
-      auto checked = check_package(p, spool_dir());
-      if (!checked) return err(checked.error().message);
-      auto id = enqueue(store, *checked, false, "socket");
-      if (!id) return err(id.error().message);
-      return json{{"ok", true}, {"id", *id}, {"name", checked->job_name}}.dump();
-    }
-    if (op == "status") {
-      if (req.contains("id")) {
-        if (!req["id"].is_number_integer()) return err("status: \"id\" must be an integer");
-        auto rec = store.get(req["id"].get<std::int64_t>());
-        if (!rec) return err(rec.error().message);
-        if (!*rec) return err("no job " + std::to_string(req["id"].get<std::int64_t>()));
-        json j = record_json(**rec);
-        if (auto st = store.stages((*rec)->id)) {
-          j["stages"] = json::array();
-          for (const auto& s : *st) j["stages"].push_back({{"stage", s.stage}, {"state", s.state}, {"seconds", s.seconds}});
-        }
-        return json{{"ok", true}, {"job", j}}.dump();
-      }
-      auto list = store.list(req.value("limit", 50));
-      if (!list) return err(list.error().message);
-      json jobs = json::array();
-      for (const auto& r : *list) jobs.push_back(record_json(r));
-      return json{{"ok", true}, {"jobs", jobs}}.dump();
-    }
-    if (op == "cancel") {
-      if (!req.contains("id") || !req["id"].is_number_integer()) return err("cancel needs \"id\": an integer");
-      std::int64_t id = req["id"];
-      auto st = store.request_cancel(id);
-      if (!st) return err(st.error().message);
-      if (*st == JobState::kRunning) {
-        std::lock_guard lock(mu_);
-        if (running_id_ == id && running_cancel_) running_cancel_->cancel();
-      }
-      return json{{"ok", true}, {"id", id}, {"state", *st == JobState::kRunning ? "cancelling" : "cancelled"}}.dump();
-    }
-    return err("unknown op \"" + op + "\" (ping, submit, status, cancel)");
+    if (auto id = enqueue(store, *checked, true, kHotOrigin + name); !id)
+      spdlog::error("printd: {}: {}", printable_utf8(entry.string()), id.error().message);
   }
 
   // The worker: one job at a time, since there is one printer.
   void work() {
-    auto store = JobStore::open(cfg_.state_dir / "jobs.db");
+    auto store = JobStore::open(db_path());
     if (!store) {
       spdlog::error("printd: worker: {}", store.error().message);
       return;
@@ -179,12 +220,15 @@ class Daemon {
       running_id_ = rec.id;
       running_cancel_ = cancel;
     }
-    spdlog::info("printd: job {} '{}' running{}", rec.id, rec.name,
+    set_crash_guard_job(rec.id);
+    spdlog::info("printd: job {} '{}' running{}", rec.id, printable_utf8(rec.name),
                  rec.last_acked_swath >= 0 ? " (resuming after swath " + std::to_string(rec.last_acked_swath) + ")" : "");
     Status result = {};
-    auto job = open_spooled_job(rec.package);
+    auto job = open_spooled_job(rec.package, cfg_.limits);
     if (!job) {
       result = std::unexpected(job.error());
+    } else if (auto st = reserve_report(rec.out_dir, rec.name, rec.id); !st) {
+      result = std::unexpected(st.error());
     } else {
       RunOptions opt;
       opt.out_dir = rec.out_dir;
@@ -200,15 +244,22 @@ class Daemon {
         (void)store.set_checkpoint(rec.id, swath);
         if (auto r = store.get(rec.id); r && *r && (*r)->cancel_requested) cancel.cancel();
       };
-      result = run_job(*job, opt, cancel);
+      try {
+        result = run_job(*job, opt, cancel);
+      } catch (const std::exception& e) {
+        // A broken invariant inside the pipeline fails this job, not the daemon.
+        result = fail(ErrorCode::kPipeline, std::string("internal error: ") + e.what());
+      }
     }
+    set_crash_guard_job(0);
     {
       std::lock_guard lock(mu_);
       running_id_ = 0;
       running_cancel_.reset();
     }
-    // Stopping the daemon interrupts the job; it stays "running" and resumes at the next start.
+    // Stopping the daemon interrupts the job; it is queued again and resumes at the next start.
     if (stop_.load() && !result && result.error().code == ErrorCode::kCancelled) {
+      (void)store.release(rec.id);
       spdlog::info("printd: job {} interrupted by shutdown", rec.id);
       return;
     }
@@ -217,27 +268,35 @@ class Daemon {
                                                                                  : JobState::kFailed;
     std::string error = result ? std::string() : result.error().message;
     (void)store.set_state(rec.id, final_state, error);
-    if (result) spdlog::info("printd: job {} '{}' done", rec.id, rec.name);
-    else spdlog::warn("printd: job {} '{}' {}: {}", rec.id, rec.name, to_string(final_state), error);
-    file_hot_folder_entry(rec, final_state, error);
+    if (result) spdlog::info("printd: job {} '{}' done", rec.id, printable_utf8(rec.name));
+    else spdlog::warn("printd: job {} '{}' {}: {}", rec.id, printable_utf8(rec.name), to_string(final_state), error);
+    finish_files(rec, final_state, error);
   }
 
-  // A job that came from the hot folder goes back there, under done/ or failed/, with its report.
-  void file_hot_folder_entry(const JobRecord& rec, JobState state, const std::string& error) {
-    if (cfg_.hot_folder.empty() || rec.origin.rfind(kHotOrigin, 0) != 0) return;
-    const std::string entry = rec.origin.substr(kHotOrigin.size());
-    fs::path dest = unique_child(cfg_.hot_folder / (state == JobState::kDone ? "done" : "failed"), entry);
-    if (!transfer_tree(rec.package, dest / entry, true)) return;
-    std::error_code ec;
-    fs::path unpacked = fs::path(rec.package + ".unpacked");
-    fs::remove_all(unpacked, ec);
-    fs::copy_file(fs::path(rec.out_dir) / "report.json", dest / "report.json", ec);
-    if (!error.empty()) std::ofstream(dest / "error.txt") << error << "\n";
+  // A job has ended: report.json says how, the hot-folder entry goes back under done/ or
+  // failed/, and the spooled copy is removed.
+  void finish_files(const JobRecord& rec, JobState state, const std::string& error) {
+    if (state != JobState::kDone) {
+      if (auto st = ensure_failure_report(rec.out_dir, rec.name, rec.id, std::string(to_string(state)), error); !st)
+        spdlog::error("printd: job {}: {}", rec.id, st.error().message);
+    }
+    if (!cfg_.hot_folder.empty() && rec.origin.rfind(kHotOrigin, 0) == 0) {
+      const std::string entry = rec.origin.substr(kHotOrigin.size());
+      fs::path dest = unique_child(cfg_.hot_folder / (state == JobState::kDone ? "done" : "failed"), entry);
+      if (transfer_tree(rec.package, dest / entry, true)) {
+        std::error_code ec;
+        fs::copy_file(fs::path(rec.out_dir) / "report.json", dest / "report.json", ec);
+        if (!error.empty()) write_error_txt(dest / "error.txt", error);
+      }
+    }
+    remove_spooled(rec.package);
   }
 
   const DaemonConfig& cfg_;
   const std::atomic<bool>& stop_;
   std::mutex mu_;
+  std::mutex submit_mu_;
+  std::mutex spool_mu_;
   std::condition_variable wake_;
   std::int64_t running_id_ = 0;
   std::optional<geometry::CancelToken> running_cancel_;

@@ -2,20 +2,28 @@
 #pragma once
 
 #include <atomic>
+#include <chrono>
 #include <filesystem>
 #include <string>
 
 #include "host/common/error.h"
+#include "host/daemon/control_socket.h"
+#include "host/job/package.h"
 
 namespace tp::host {
 
 struct DaemonConfig {
-  std::filesystem::path state_dir;     ///< jobs.db, spool/, printd.sock live here
+  std::filesystem::path state_dir;     ///< jobs.db, spool/, printd.sock live here (made 0700)
   std::filesystem::path hot_folder;    ///< empty = no hot folder
   std::filesystem::path out_dir;       ///< job outputs: <out_dir>/<job-name>/
   std::filesystem::path socket_path;   ///< default <state_dir>/printd.sock
   std::string printer_override;        ///< "" = each job's own; "none" = never print
   int hot_folder_poll_ms = 500;
+  int hot_folder_settle_ms = 2000;     ///< an entry must hold still this long before it is taken
+  ClientLimits clients;                ///< control-socket clients: timeout, size, how many at once
+  PackageLimits limits;                ///< what a job may hold and ask for (docs/daemon.md)
+  int max_crashes = 1;                 ///< fatal signals while running a job before it is failed
+  int max_unclean_exits = 3;           ///< kill -9 / power losses while running a job before it is failed
 };
 
 /// Runs the daemon until `stop` becomes true (SIGTERM/SIGINT in printd). A job running at stop

@@ -1,11 +1,25 @@
 // host/daemon/hot_folder.cpp: settle detection for dropped job packages.
 #include "host/daemon/hot_folder.h"
 
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
 #include <set>
 
 namespace tp::host {
 
 namespace fs = std::filesystem;
+
+bool open_for_writing(const fs::path& file) {
+  int fd = ::open(file.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) return false;
+  const int r = ::fcntl(fd, F_SETLEASE, F_RDLCK);
+  const bool busy = r != 0 && (errno == EAGAIN || errno == EBUSY);
+  if (r == 0) ::fcntl(fd, F_SETLEASE, F_UNLCK);
+  ::close(fd);
+  return busy;
+}
 
 HotFolder::HotFolder(fs::path dir, std::chrono::milliseconds settle) : dir_(std::move(dir)), settle_(settle) {}
 
@@ -46,10 +60,24 @@ std::vector<fs::path> HotFolder::scan() {
       seen_[p] = cur;
       continue;
     }
-    if (now - it->second.since >= settle_) {
-      ready.push_back(p);
-      seen_.erase(it);
+    if (now - it->second.since < settle_) continue;
+    // Stable for the settle time; still refused while any file of it is open for writing.
+    bool writing = false;
+    if (e.is_directory(ec)) {
+      int files = 0;
+      for (const auto& f : fs::recursive_directory_iterator(p, ec)) {
+        if (++files > 10000 || writing) break;
+        if (f.is_regular_file(ec)) writing = open_for_writing(f.path());
+      }
+    } else {
+      writing = open_for_writing(p);
     }
+    if (writing) {
+      it->second.since = now;
+      continue;
+    }
+    ready.push_back(p);
+    seen_.erase(it);
   }
   // Forget entries that went away so a re-dropped job is seen afresh.
   for (auto it = seen_.begin(); it != seen_.end();) it = present.count(it->first) ? std::next(it) : seen_.erase(it);

@@ -6,11 +6,16 @@
 #include <map>
 #include <vector>
 
+#include <cstdint>
+
 namespace tp::host {
 
 /// A folder where operators and cells drop jobs (a folder with job.json, or a .zip). An entry is
-/// ready once its size and modification time held still across scans `settle` apart, so a job
-/// still being copied in is never taken half-written. done/ and failed/ hold finished entries.
+/// ready once its size and modification time held still for `settle` and no process has one of
+/// its files open for writing (checked with a read lease, fcntl F_SETLEASE), so a job still being
+/// copied in, even by a copier that pauses, is never taken half-written. Hidden names (".x") are
+/// skipped, so a copy to ".name" renamed to "name" is taken at once after the settle time.
+/// done/ and failed/ hold finished entries.
 class HotFolder {
  public:
   explicit HotFolder(std::filesystem::path dir,
@@ -22,6 +27,7 @@ class HotFolder {
   std::vector<std::filesystem::path> scan();
 
   const std::filesystem::path& dir() const { return dir_; }
+  std::chrono::milliseconds settle() const { return settle_; }
   std::filesystem::path done_dir() const { return dir_ / "done"; }
   std::filesystem::path failed_dir() const { return dir_ / "failed"; }
 
@@ -35,5 +41,9 @@ class HotFolder {
   std::chrono::milliseconds settle_;
   std::map<std::filesystem::path, Seen> seen_;
 };
+
+/// True when some process has `file` open for writing (a read lease cannot be taken). False when
+/// it is not, or when the filesystem does not support leases (then only the settle time guards).
+bool open_for_writing(const std::filesystem::path& file);
 
 }  // namespace tp::host

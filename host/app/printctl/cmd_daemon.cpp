@@ -7,6 +7,7 @@
 #include <thread>
 
 #include "host/app/printctl/commands.h"
+#include "host/common/text.h"
 #include "host/daemon/control_socket.h"
 
 namespace tp::host::cli {
@@ -29,7 +30,7 @@ void add_daemon_options(CLI::App* cmd, DaemonArgs& a) {
 
 // Sends a request and returns the reply object, or fails the command with the daemon's error.
 json request(const DaemonArgs& a, const json& req) {
-  auto reply = socket_request(a.socket_path(), req.dump());
+  auto reply = socket_request(a.socket_path(), dump_json(req));
   if (!reply) {
     std::fprintf(stderr, "printctl: %s\n", reply.error().message.c_str());
     throw CLI::RuntimeError(3);
@@ -58,16 +59,26 @@ void register_daemon_commands(CLI::App& app) {
   static DaemonArgs args;
   static std::string package;
   static bool wait = false;
+  static bool reprint = false;
   static double wait_timeout_s = 3600;
   CLI::App* submit = app.add_subcommand("submit", "Queue a job (folder or .zip) on the running printd");
   submit->add_option("job", package, "Job package")->required();
   submit->add_flag("--wait", wait, "Wait until the job ends; exit 0 only if it is done");
   submit->add_option("--timeout", wait_timeout_s, "Seconds to wait with --wait");
+  submit->add_flag("--reprint", reprint,
+                   "Queue it even if the same package is already queued, running or done (a retry without "
+                   "this never prints twice)");
   add_daemon_options(submit, args);
   submit->callback([] {
-    json r = request(args, {{"op", "submit"}, {"package", fs::absolute(package).lexically_normal().string()}});
-    const long long id = r["id"];
-    std::printf("queued job %lld '%s'\n", id, r.value("name", std::string()).c_str());
+    json req = {{"op", "submit"}, {"package", fs::absolute(package).lexically_normal().string()}};
+    if (reprint) req["reprint"] = true;
+    json r = request(args, req);
+    const long long id = r.value("id", 0LL);
+    if (r.value("duplicate", false))
+      std::printf("job %lld '%s' already %s with the same content (not queued again; --reprint to print it again)\n",
+                  id, r.value("name", std::string()).c_str(), r.value("state", std::string("queued")).c_str());
+    else
+      std::printf("queued job %lld '%s'\n", id, r.value("name", std::string()).c_str());
     if (!wait) return;
     auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(wait_timeout_s);
     for (;;) {
@@ -100,7 +111,7 @@ void register_daemon_commands(CLI::App& app) {
     if (status_id >= 0) req["id"] = status_id;
     json r = request(args, req);
     if (status_json) {
-      std::printf("%s\n", r.dump(2).c_str());
+      std::printf("%s\n", dump_json(r, 2).c_str());
       return;
     }
     std::printf("%-5s %-10s %-9s %-32s %s\n", "ID", "STATE", "STAGE", "NAME", "ERROR");

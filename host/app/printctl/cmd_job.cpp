@@ -4,8 +4,12 @@
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
+#include <string>
+#include <vector>
 
 #include "host/app/printctl/commands.h"
+#include "host/common/atomic_file.h"
+#include "host/common/failure_report.h"
 #include "host/job/manifest.h"
 #include "host/job/package.h"
 #include "device/model/printer_model_file.h"
@@ -19,9 +23,19 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Opens and validates a package; a zip is unpacked into `scratch`.
+// Job limits given with --limit NAME=VALUE (shared by validate and run).
+PackageLimits g_limits;
+std::vector<std::string> g_limit_specs;
+
+void add_limit_option(CLI::App* cmd) {
+  cmd->add_option("--limit", g_limit_specs, "NAME=VALUE: a job limit, as printd's --limit (docs/daemon.md)");
+}
+
+// Opens and validates a package under the --limit values; a zip is unpacked into `scratch`.
 Result<Job> open_job(const fs::path& path, const fs::path& scratch) {
-  auto pkg = JobPackage::open(path, scratch);
+  for (const auto& l : g_limit_specs)
+    if (auto st = set_limit(g_limits, l); !st) return fail(st.error());
+  auto pkg = JobPackage::open(path, scratch, g_limits);
   if (!pkg) return fail(pkg.error());
   return load_job(*pkg);
 }
@@ -37,6 +51,7 @@ void register_job_commands(CLI::App& app) {
   static std::string validate_path;
   CLI::App* validate = app.add_subcommand("validate", "Check a job package; exit 0 if it is valid");
   validate->add_option("job", validate_path, "Job folder or .zip")->required();
+  add_limit_option(validate);
   validate->callback([] {
     fs::path scratch = fs::temp_directory_path() / ("printctl-validate-" + std::to_string(::getpid()));
     auto job = open_job(validate_path, scratch);
@@ -64,9 +79,7 @@ void register_job_commands(CLI::App& app) {
       std::fputs(text.c_str(), stdout);
       return;
     }
-    std::FILE* f = std::fopen(model_out.c_str(), "w");
-    if (!f || std::fputs(text.c_str(), f) < 0) die(Error{ErrorCode::kIo, model_out + ": cannot write"}, 1);
-    std::fclose(f);
+    if (auto st = write_file_atomic(model_out, text); !st) die(st.error(), 1);
   });
 
   static std::string run_path, run_out, run_printer;
@@ -77,6 +90,7 @@ void register_job_commands(CLI::App& app) {
   run->add_option("--printer", run_printer, "Override the job's printer: sim, usb or none")
       ->check(CLI::IsMember({"sim", "usb", "none"}));
   run->add_option("--resume-after-swath", resume_after, "Swaths up to this index were already printed");
+  add_limit_option(run);
   run->callback([] {
     fs::path out = fs::absolute(run_out);
     // A zip job is unpacked inside the output folder, afresh on every run.
@@ -93,10 +107,7 @@ void register_job_commands(CLI::App& app) {
       if (!model) die(model.error(), 1);
       fs::create_directories(out, ec);
       const fs::path model_file = out / "printer-model.txt";
-      if (std::FILE* f = std::fopen(model_file.c_str(), "w")) {
-        std::fputs(device::format_printer_model(*model).c_str(), f);
-        std::fclose(f);
-      }
+      if (auto st = write_file_atomic(model_file, device::format_printer_model(*model)); !st) die(st.error(), 1);
       SimReexec sim;
       sim.out_dir = out;
       sim.printer_model = model_file;
@@ -110,7 +121,14 @@ void register_job_commands(CLI::App& app) {
     // Printers report "no job" as id 0, so a command-line run takes a non-zero id of its own.
     opt.job_id = static_cast<std::int64_t>(std::time(nullptr));
     geometry::CancelToken cancel;
-    if (auto st = run_job(*job, opt, cancel); !st) die(st.error(), 1);
+    if (auto st = reserve_report(out, job->name, opt.job_id); !st) die(st.error(), 1);
+    if (auto st = run_job(*job, opt, cancel); !st) {
+      // report.json is left with the error even when the pipeline could not write its own.
+      const std::string state = st.error().code == ErrorCode::kCancelled ? "cancelled" : "failed";
+      if (auto r = ensure_failure_report(out, job->name, opt.job_id, state, st.error().message); !r)
+        std::fprintf(stderr, "%s\n", r.error().message.c_str());
+      die(st.error(), 1);
+    }
     std::printf("job '%s' done: %s\n", job->name.c_str(), (out / "report.json").c_str());
   });
 }

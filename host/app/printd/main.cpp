@@ -5,6 +5,8 @@
 #include <atomic>
 #include <csignal>
 #include <cstdio>
+#include <string>
+#include <vector>
 
 #include "host/daemon/daemon.h"
 #include "rip/common/memory.h"
@@ -26,7 +28,31 @@ int main(int argc, char** argv) {
   app.add_option("--printer", cfg.printer_override, "Override each job's printer: sim, usb or none")
       ->check(CLI::IsMember({"sim", "usb", "none"}));
   app.add_option("--poll-ms", cfg.hot_folder_poll_ms, "Hot folder scan interval")->capture_default_str();
+  app.add_option("--hot-settle-ms", cfg.hot_folder_settle_ms,
+                 "A hot-folder entry is taken once its size held still this long and no file of it is open "
+                 "for writing")->capture_default_str()->check(CLI::Range(0, 3600000));
+  app.add_option("--client-timeout-ms", cfg.clients.request_timeout_ms,
+                 "A control-socket client must send its whole request line within this")
+      ->capture_default_str()->check(CLI::Range(50, 600000));
+  app.add_option("--max-clients", cfg.clients.max_clients, "Control-socket clients served at once")
+      ->capture_default_str()->check(CLI::Range(1, 1024));
+  app.add_option("--max-crashes", cfg.max_crashes,
+                 "A job on which printd crashed (fatal signal) this many times is failed, not retried")
+      ->capture_default_str()->check(CLI::Range(1, 100));
+  app.add_option("--max-unclean-exits", cfg.max_unclean_exits,
+                 "A job printd vanished under (kill -9, out of memory, power loss) more than this many times is "
+                 "failed, not resumed again")->capture_default_str()->check(CLI::Range(0, 1000));
+  std::vector<std::string> limits;
+  app.add_option("--limit", limits,
+                 "NAME=VALUE: raise or lower a job limit (repeatable); defaults: " +
+                     tp::host::describe_limits(cfg.limits));
   CLI11_PARSE(app, argc, argv);
+  for (const auto& l : limits) {
+    if (auto st = tp::host::set_limit(cfg.limits, l); !st) {
+      std::fprintf(stderr, "printd: %s\n", st.error().message.c_str());
+      return 2;
+    }
+  }
 
   cfg.state_dir = state_dir;
   cfg.hot_folder = hot;
