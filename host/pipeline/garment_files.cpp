@@ -6,6 +6,8 @@
 
 #include "geometry/garment/garment_obj.h"
 #include "geometry/preview/render_preview.h"
+#include "host/common/atomic_file.h"
+#include "host/pipeline/internal/output_files.h"
 
 namespace tp::host {
 namespace {
@@ -27,10 +29,7 @@ std::string body_obj(const geometry::BodyMesh& body) {
 }  // namespace
 
 Status write_text_file(const std::filesystem::path& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-  if (!out) return fail(ErrorCode::kIo, path.string() + ": cannot write");
-  return {};
+  return write_file_atomic(path, text);
 }
 
 Result<std::vector<std::string>> write_garment_previews(const std::filesystem::path& dir, const std::string& prefix,
@@ -39,8 +38,8 @@ Result<std::vector<std::string>> write_garment_previews(const std::filesystem::p
   std::vector<std::string> names;
   for (auto view : {geometry::PreviewView::kFront, geometry::PreviewView::kSide, geometry::PreviewView::kBack}) {
     const std::string name = prefix + geometry::to_string(view) + ".png";
-    if (auto st = rip::write_png(dir / name, geometry::render_preview(garment, body, view), channels); !st)
-      return fail(ErrorCode::kIo, st.error().message);
+    if (auto st = internal::write_png_checked(dir / name, geometry::render_preview(garment, body, view), channels); !st)
+      return fail(st.error());
     names.push_back(name);
   }
   return names;

@@ -5,8 +5,9 @@
 
 #include <chrono>
 #include <ctime>
-#include <fstream>
 
+#include "host/common/atomic_file.h"
+#include "host/common/text.h"
 #include "host/pipeline/internal/pipeline_state.h"
 #include "host/pipeline/internal/stage_tracker.h"
 
@@ -50,17 +51,9 @@ std::string utc_now() {
 }
 
 Status write_report(const fs::path& out_dir, const nlohmann::json& report) {
-  fs::path tmp = out_dir / "report.json.tmp";
-  {
-    std::ofstream out(tmp);
-    out << report.dump(2) << "\n";
-    if (!out) return fail(ErrorCode::kIo, tmp.string() + ": cannot write");
-  }
-  // Replace atomically so a reader never sees half a report.
-  std::error_code ec;
-  fs::rename(tmp, out_dir / "report.json", ec);
-  if (ec) return fail(ErrorCode::kIo, (out_dir / "report.json").string() + ": " + ec.message());
-  return {};
+  // Text from job files (a DXF's strings, file names) may not be UTF-8: dump_json never throws on
+  // it. The report is replaced atomically so a reader never sees half of one.
+  return write_file_atomic(out_dir / "report.json", dump_json(report, 2) + "\n");
 }
 
 }  // namespace

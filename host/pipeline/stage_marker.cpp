@@ -1,6 +1,7 @@
 // host/pipeline/stage_marker.cpp: the marker stage: cut outlines nested on the roll under the
 // job's grain, mirror, gap and defect rules; markers laid end to end; marker.png.
 #include "geometry/nesting/nest_pieces.h"
+#include "host/pipeline/internal/output_files.h"
 #include "host/pipeline/internal/pipeline_state.h"
 #include "rip/image/image_io.h"
 #include "rip/render/marker_preview.h"
@@ -77,8 +78,8 @@ Status stage_marker(PipelineState& ps) {
 
   auto preview = rip::render_marker_preview(ps.roll, *ps.renderer, ps.job.print.preview_dpi);
   if (!preview) return fail(ErrorCode::kPipeline, "marker.png: " + preview.error().message);
-  if (auto st = rip::write_png(ps.options.out_dir / "marker.png", *preview, rip::PngChannels::kRgbOverWhite); !st)
-    return fail(ErrorCode::kIo, st.error().message);
+  if (auto st = write_png_checked(ps.options.out_dir / "marker.png", *preview, rip::PngChannels::kRgbOverWhite); !st)
+    return st;
   return {};
 }
 

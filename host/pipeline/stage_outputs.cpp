@@ -8,6 +8,8 @@
 #include "geometry/cutfile/dxf_aama_writer.h"
 #include "geometry/cutfile/svg_writer.h"
 #include "geometry/design/render_piece_image.h"
+#include "host/common/atomic_file.h"
+#include "host/pipeline/internal/output_files.h"
 #include "host/pipeline/internal/pipeline_state.h"
 #include "rip/image/image_io.h"
 
@@ -40,7 +42,7 @@ Status stage_outputs(PipelineState& ps) {
     if (ps.cancel.cancelled()) return fail(ErrorCode::kCancelled, "job cancelled");
     auto img = geometry::render_piece_image(*ps.renderer, i, ps.job.print.preview_dpi);
     std::string name = "pieces/" + file_stem(ps.pattern.pieces[static_cast<size_t>(i)].name) + ".png";
-    if (auto st = rip::write_png(out / name, img.image); !st) return fail(ErrorCode::kIo, st.error().message);
+    if (auto st = write_png_checked(out / name, img.image); !st) return st;
     pieces.push_back(name);
   }
   ps.report["files"] = {{"marker", "marker.png"}, {"pieces", pieces}};
@@ -48,8 +50,8 @@ Status stage_outputs(PipelineState& ps) {
   // Cut contours exactly where the pieces were printed on the roll.
   auto cut = geometry::make_cut_job(ps.pattern, ps.finishing, ps.roll);
   if (!cut) return fail(ErrorCode::kPipeline, "cut files: " + cut.error().message);
-  if (auto st = geometry::write_dxf_aama(*cut, out / "cut.dxf"); !st) return fail(ErrorCode::kIo, st.error().message);
-  if (auto st = geometry::write_svg(*cut, out / "cut.svg"); !st) return fail(ErrorCode::kIo, st.error().message);
+  if (auto st = write_file_atomic(out / "cut.dxf", geometry::dxf_aama_text(*cut)); !st) return st;
+  if (auto st = write_file_atomic(out / "cut.svg", geometry::svg_text(*cut)); !st) return st;
   ps.report["files"]["cut"] = {"cut.dxf", "cut.svg"};
 
   if (!ps.pattern.stitches.empty()) {

@@ -1,7 +1,14 @@
 // rip/image/image_write.cpp: PNG and multi-channel TIFF output through OpenImageIO.
-#include <algorithm>
-#include <string>
+#include <fcntl.h>
+#include <unistd.h>
 
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include <OpenImageIO/filesystem.h>
 #include <OpenImageIO/imageio.h>
 #include <spdlog/fmt/fmt.h>
 
@@ -15,10 +22,16 @@ namespace OIIO = OIIO_NAMESPACE;
 
 namespace {
 
+// Encodes in memory and writes the file with every write(2) checked: OIIO's file writers can
+// drop a failed fwrite (a full disk left empty or truncated PNGs without an error).
 Status write_whole(const std::filesystem::path& path, const OIIO::ImageSpec& spec, const std::uint8_t* data) {
   const std::string name = path.string();
   auto out = OIIO::ImageOutput::create(name);
   if (!out) return fail(ErrorCode::kIo, fmt::format("{}: cannot create image writer: {}", name, OIIO::geterror()));
+  std::vector<unsigned char> bytes;
+  OIIO::Filesystem::IOVecOutput vec(bytes);
+  const bool in_memory = out->supports("ioproxy");
+  if (in_memory) out->set_ioproxy(&vec);
   if (!out->open(name, spec))
     return fail(ErrorCode::kIo, fmt::format("{}: cannot open for writing: {}", name, out->geterror()));
   if (!out->write_image(OIIO::TypeDesc::UINT8, data)) {
@@ -27,6 +40,25 @@ Status write_whole(const std::filesystem::path& path, const OIIO::ImageSpec& spe
     return fail(ErrorCode::kIo, fmt::format("{}: cannot write image: {}", name, why));
   }
   if (!out->close()) return fail(ErrorCode::kIo, fmt::format("{}: cannot finish image: {}", name, out->geterror()));
+  if (!in_memory) return {};
+  int fd = ::open(name.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) return fail(ErrorCode::kIo, fmt::format("{}: cannot create: {}", name, std::strerror(errno)));
+  size_t off = 0;
+  int err = 0;
+  while (off < bytes.size()) {
+    ssize_t n = ::write(fd, bytes.data() + off, bytes.size() - off);
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) {
+      err = errno;
+      break;
+    }
+    off += static_cast<size_t>(n);
+  }
+  if (::close(fd) != 0 && err == 0) err = errno;
+  if (err != 0) {
+    ::unlink(name.c_str());
+    return fail(ErrorCode::kIo, fmt::format("{}: {}{}", name, std::strerror(err), err == ENOSPC ? " (ENOSPC)" : ""));
+  }
   return {};
 }
 
