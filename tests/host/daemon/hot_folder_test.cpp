@@ -47,5 +47,30 @@ TEST(HotFolder, IgnoresHiddenFinishedAndNonJobEntries) {
   EXPECT_EQ(ready[0].filename(), "job.zip");
 }
 
+TEST(HotFolder, ZipStillOpenForWritingIsNotTakenEvenWhenItsSizeHoldsStill) {
+  fs::path dir = tp::test::scratch_dir("hot-open");
+  HotFolder hot(dir, 100ms);
+  ASSERT_TRUE(hot.prepare());
+  {
+    // A copier that wrote half the file and paused, keeping it open.
+    std::ofstream copier(dir / "job.zip", std::ios::binary);
+    copier << "PK half";
+    copier.flush();
+    EXPECT_TRUE(open_for_writing(dir / "job.zip"));
+    for (int i = 0; i < 4; ++i) {
+      EXPECT_TRUE(hot.scan().empty()) << i;
+      std::this_thread::sleep_for(150ms);
+    }
+  }
+  EXPECT_FALSE(open_for_writing(dir / "job.zip"));
+  // Closed: taken after one more settle time.
+  std::vector<fs::path> ready;
+  for (int i = 0; i < 5 && ready.empty(); ++i) {
+    ready = hot.scan();
+    std::this_thread::sleep_for(150ms);
+  }
+  ASSERT_EQ(ready.size(), 1u);
+}
+
 }  // namespace
 }  // namespace tp::host

@@ -20,6 +20,7 @@ struct Entry {
   std::string name;
   std::string data;
   bool symlink = false;
+  zip_uint32_t unix_mode = 0;  ///< written as the entry's Unix mode when non-zero
 };
 
 // Writes a zip with libzip (entries stored deflated).
@@ -35,6 +36,8 @@ fs::path make_zip(const fs::path& dir, const std::vector<Entry>& entries) {
     if (e.symlink)
       zip_file_set_external_attributes(z, static_cast<zip_uint64_t>(idx), 0, ZIP_OPSYS_UNIX,
                                        static_cast<zip_uint32_t>(S_IFLNK | 0777) << 16);
+    if (e.unix_mode)
+      zip_file_set_external_attributes(z, static_cast<zip_uint64_t>(idx), 0, ZIP_OPSYS_UNIX, e.unix_mode << 16);
   }
   EXPECT_EQ(zip_close(z), 0);
   return p;
@@ -121,6 +124,41 @@ TEST(CheckRelativePath, RefusesEscapes) {
   EXPECT_FALSE(check_relative_path("/abs"));
   EXPECT_FALSE(check_relative_path("a/../../b"));
   EXPECT_FALSE(check_relative_path("a\\b"));
+}
+
+TEST(JobPackage, ZipEntryWithPermissionBitsOnlyIsAPlainFile) {
+  // Python's zipfile.writestr records 0600 with no file type; such an entry is a plain file.
+  fs::path dir = tp::test::scratch_dir("pkg-modebits");
+  fs::path zip = make_zip(dir, {{"job.json", "{}", false, 0600}, {"pattern.json", "{}", false, 0644}});
+  auto pkg = JobPackage::open(zip, dir / "unpacked");
+  ASSERT_TRUE(pkg) << pkg.error().message;
+  EXPECT_TRUE(fs::is_regular_file(pkg->root() / "pattern.json"));
+  // A device node is still refused.
+  fs::path dir2 = tp::test::scratch_dir("pkg-modebits-dev");
+  fs::path zip2 = make_zip(dir2, {{"job.json", "{}", false, S_IFCHR | 0600}});
+  EXPECT_FALSE(JobPackage::open(zip2, dir2 / "unpacked"));
+}
+
+TEST(JobPackage, SymlinkedManifestIsRefused) {
+  fs::path dir = tp::test::scratch_dir("pkg-manifest-link");
+  fs::create_directories(dir / "job");
+  std::ofstream(dir / "outside.json") << "{}";
+  fs::create_symlink(dir / "outside.json", dir / "job" / "job.json");
+  auto pkg = JobPackage::open(dir / "job", dir / "unpacked");
+  ASSERT_FALSE(pkg);
+  EXPECT_EQ(pkg.error().code, ErrorCode::kUnsafePath);
+  EXPECT_NE(pkg.error().message.find("job.json is a symbolic link"), std::string::npos) << pkg.error().message;
+}
+
+TEST(JobPackage, LimitsAreSetByName) {
+  PackageLimits l;
+  ASSERT_TRUE(set_limit(l, "max_stroke_points=500"));
+  EXPECT_EQ(l.max_stroke_points, 500u);
+  auto bad = set_limit(l, "max_strokes=5");
+  ASSERT_FALSE(bad);
+  EXPECT_NE(bad.error().message.find("max_stroke_points"), std::string::npos);
+  EXPECT_FALSE(set_limit(l, "max_layers=-3"));
+  EXPECT_FALSE(set_limit(l, "max_layers"));
 }
 
 }  // namespace
