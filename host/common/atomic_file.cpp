@@ -66,7 +66,9 @@ std::string errno_text(int e) {
 void set_write_budget_for_tests(long long bytes) { g_write_budget = bytes; }
 
 fs::path temp_path_for(const fs::path& path) {
-  return path.parent_path() / ("." + path.filename().string() + ".tmp-" + std::to_string(::getpid()));
+  // The extension stays last: writers in other layers pick the file format by it.
+  return path.parent_path() /
+         ("." + path.stem().string() + ".tmp-" + std::to_string(::getpid()) + path.extension().string());
 }
 
 Status write_file_atomic(const fs::path& path, std::string_view bytes, unsigned mode) {

@@ -10,7 +10,8 @@
 namespace tp::host {
 
 /// The temporary name an output is written under before it is renamed into place
-/// ("<dir>/.<name>.tmp-<pid>"): hidden, so hot-folder and report readers skip it.
+/// ("<dir>/.<stem>.tmp-<pid><ext>"): hidden, so hot-folder and report readers skip it, and the
+/// extension kept last so writers that choose a format by it still do.
 std::filesystem::path temp_path_for(const std::filesystem::path& path);
 
 /// Writes `bytes` to `path`: into temp_path_for(path), every write checked, fsync'd, then renamed

@@ -52,6 +52,12 @@ TEST(AtomicFile, WriterThatLeavesNothingIsAnError) {
   EXPECT_EQ(st2.error().message, (dir / "b.png").string() + ": No space left on device");
 }
 
+TEST(AtomicFile, PngOutputIsWrittenThroughItsTemporaryName) {
+  fs::path dir = tp::test::scratch_dir("atomic-ext");
+  EXPECT_EQ(temp_path_for(dir / "marker.png").extension(), ".png");  // writers choose formats by it
+  EXPECT_EQ(temp_path_for(dir / "marker.png").filename().string()[0], '.');
+}
+
 TEST(FailureReport, ReservedReportIsRewrittenWithTheError) {
   fs::path dir = tp::test::scratch_dir("report-fallback");
   ASSERT_TRUE(reserve_report(dir, "j", 7));
