@@ -15,6 +15,7 @@ TP_PACKAGES=(
   liblcms2-dev icc-profiles-free colord-data libgs10-common ghostscript
   libgtest-dev libgmock-dev libbenchmark-dev
   libumockdev-dev umockdev
+  python3
   clang libclang-rt-14-dev
 )
 
