@@ -23,7 +23,7 @@ struct DaemonConfig {
   ClientLimits clients;                ///< control-socket clients: timeout, size, how many at once
   PackageLimits limits;                ///< what a job may hold and ask for (docs/daemon.md)
   int max_crashes = 1;                 ///< fatal signals while running a job before it is failed
-  int max_unclean_exits = 3;           ///< kill -9 / power losses while running a job before it is failed
+  int max_unclean_exits = 8;           ///< kill -9 / power losses while running a job before it is failed
 };
 
 /// Runs the daemon until `stop` becomes true (SIGTERM/SIGINT in printd). A job running at stop

@@ -91,7 +91,7 @@ class JobStore {
   /// back to "queued" with their checkpoint, unless they have now vanished more than
   /// `max_unclean_exits` times, which marks them failed (a crash loop). Cancel requests made
   /// before the restart make them cancelled.
-  [[nodiscard]] Result<RequeueResult> requeue_interrupted(int max_unclean_exits = 3);
+  [[nodiscard]] Result<RequeueResult> requeue_interrupted(int max_unclean_exits = 8);
 
  private:
   explicit JobStore(sqlite3* db) : db_(db) {}
