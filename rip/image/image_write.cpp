@@ -55,8 +55,8 @@ Status write_whole(const std::filesystem::path& path, const OIIO::ImageSpec& spe
     off += static_cast<size_t>(n);
   }
   if (::close(fd) != 0 && err == 0) err = errno;
+  // The partial file is left for the caller to remove (host/ writes to a temporary name).
   if (err != 0) {
-    ::unlink(name.c_str());
     return fail(ErrorCode::kIo, fmt::format("{}: {}{}", name, std::strerror(err), err == ENOSPC ? " (ENOSPC)" : ""));
   }
   return {};
