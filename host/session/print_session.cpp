@@ -120,6 +120,7 @@ Status PrintSession::begin_job(const JobStart& job) {
   planned_end_um_ = 0;
   ending_ = false;
   finished_on_printer_ = false;
+  reopen_seq_ = 0;
   unprinted_.clear();
   feed_fix_swath_.reset();
   lost_at_um_.reset();

@@ -34,7 +34,10 @@ struct PrinterConfig {
   bool use_gpio = true;  ///< without GPIO, cues are acknowledged without firing a line
   drivers::GpioConfig gpio;
   std::chrono::milliseconds open_timeout{5000};
-  std::chrono::milliseconds reconnect_timeout{15000};  ///< how long an unplugged printer may stay away
+  /// How long an unplugged printer may stay away before the job fails (a printer re-enumerates in
+  /// a second or two; one that stays away longer needs the operator). Every caller (printctl run,
+  /// printd, link-job) gets this limit unless it sets another.
+  std::chrono::milliseconds reconnect_timeout{5000};
   std::chrono::milliseconds cutter_ready_timeout{10000};
   std::chrono::microseconds cue_pulse{10000};          ///< width of the cue and notch pulses
   std::chrono::milliseconds max_pause{std::chrono::minutes(30)};  ///< longest printer pause tolerated
@@ -181,6 +184,7 @@ class PrintSession {
   std::int64_t feed_fix_um_ = 0;
   std::optional<std::int64_t> lost_at_um_;  ///< resumed after a loss: cues up to here were passed
   bool finished_on_printer_ = false;
+  std::uint32_t reopen_seq_ = 0;  ///< link sequence of the job_begin that reopened a lost job
   std::vector<CueRecord> cues_;
   std::uint32_t cues_sent_ = 0;        ///< cues with id <= this are on the printer
   std::uint64_t seen_status_ = 0;

@@ -46,7 +46,14 @@ Status PrintSession::service(milliseconds wait, const geometry::CancelToken* can
 
 Status PrintSession::absorb_status() {
   if (auto r = link_->take_reject()) {
-    if (active_)
+    // Frames sent before the printer lost the job are refused for want of a job: not an error,
+    // the resume below (or already done) sends them again.
+    const device::StatusMsg* now = link_->status();
+    const bool lost_now = now && now->job_id != job_.job_id && now->last_job_id == job_.job_id &&
+                          now->last_outcome == device::JobOutcome::kLost;
+    if (active_ && r->code == device::ErrorCode::kBadState && (lost_now || r->seq < reopen_seq_)) {
+      session_log()->info("printer refused {} sent before it lost the job: {}", device::to_string(r->refused), r->message);
+    } else if (active_)
       return fail_job(ErrorCode::kPrinter, "printer refused " + std::string(device::to_string(r->refused)) + ": " +
                                                r->message);
     session_log()->warn("printer refused {}: {}", device::to_string(r->refused), r->message);

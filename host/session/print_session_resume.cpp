@@ -142,6 +142,7 @@ Status PrintSession::resume_lost_job(const device::StatusMsg& st, bool& disconne
   lost_at_um_ = stands_um;
   active_ = false;  // the printer has no job open until the job_begin below
   device::JobBeginMsg m{job_.job_id, job_.name, k, job_.fabric_width_px, stands_um};
+  reopen_seq_ = link_->next_seq();
   auto sent = link_->send_msg(device::MessageType::kJobBegin, m);
   std::optional<device::StatusMsg> now;
   device::Error e;
@@ -158,7 +159,7 @@ Status PrintSession::resume_lost_job(const device::StatusMsg& st, bool& disconne
     if (disconnected) return fail(ErrorCode::kPrinter, "reopening " + job + ": " + e.message);
     return stop("reopening it: " + e.message);
   }
-  if (auto r = link_->take_reject()) {
+  if (auto r = link_->take_reject(); r && r->seq >= reopen_seq_) {
     active_ = in_session;
     return stop("it refused to reopen it: " + r->message);
   }
