@@ -155,6 +155,8 @@ Status PrintSession::queue_cue(device::CueKind kind, std::int64_t position_um, s
     auto s = link_->send_msg(device::MessageType::kCutterCue, m);
     if (s) {
       cues_sent_ = c.id;
+      const device::StatusMsg* st = link_->status();
+      if (st && st->job_id == job_.job_id && st->cue_waiting == c.id) return fire_cue(c.id, nullptr);
       return service(milliseconds(0), nullptr);
     }
     if (s.error().code != device::ErrorCode::kDisconnected) return fail(from_device(s.error(), "cue " + std::to_string(c.id)));

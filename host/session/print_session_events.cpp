@@ -101,7 +101,12 @@ Status PrintSession::absorb_status() {
 
 Status PrintSession::fire_cue(std::uint32_t id, const geometry::CancelToken* cancel) {
   auto it = std::find_if(cues_.begin(), cues_.end(), [&](const CueRecord& c) { return c.id == id; });
-  if (it == cues_.end()) return fail_job(ErrorCode::kPrinter, "printer stopped at unknown cue " + std::to_string(id));
+  if (it == cues_.end()) {
+    // A printer re-attached after a host restart may stand at a cue this session has not queued
+    // yet: queue_cue() fires it once it is known.
+    if (id > cues_.size()) return {};
+    return fail_job(ErrorCode::kPrinter, "printer stopped at unknown cue " + std::to_string(id));
+  }
   CueRecord& cue = *it;
   char pos[64];
   std::snprintf(pos, sizeof pos, "%s at %.1f mm", std::string(device::to_string(cue.kind)).c_str(),
