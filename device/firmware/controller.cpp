@@ -96,6 +96,11 @@ StatusMsg PrinterController::status() const {
   s.last_outcome = last_outcome_;
   s.rx_crc_errors = rx_.crc_errors();
   s.rx_gaps = rx_.gaps();
+  s.printed_fabric_um = job_active_ ? printed_fabric_um_ : 0;
+  s.queued_fabric_um = job_active_ ? queued_fabric_um_ : 0;
+  s.last_printed_next = last_printed_next_;
+  s.last_printed_fabric_um = last_printed_fabric_um_;
+  s.last_fabric_pos_um = last_fabric_pos_um_;
   return s;
 }
 
@@ -239,6 +244,7 @@ void PrinterController::handle(const Frame& frame) {
       BufferedSwath feed;
       feed.feed_only = true;
       feed.msg.header.feed_before_um = m->feed_um;
+      queued_fabric_um_ += m->feed_um;
       buffer_.push_back(std::move(feed));
       break;
     }
@@ -294,11 +300,27 @@ void PrinterController::on_job_begin(const JobBeginMsg& m) {
   swath_next_ = printed_next_ = m.first_swath;
   end_requested_ = false;
   final_feed_done_ = false;
-  fabric_pos_um_ = feed_travel_um_ = 0;
+  fabric_pos_um_ = printed_fabric_um_ = queued_fabric_um_ = m.fabric_pos_um;
+  feed_travel_um_ = 0;
   print_time_s_ = 0;
   drops_per_ink_.assign(model_.inks.size(), 0);
   swaths_printed_ = cues_fired_ = overruns_ = row_mismatches_ = 0;
   head_offset_min_ = head_offset_max_ = 0;
+  report_first_swath_ = m.first_swath;
+  // The host resumes a job this printer lost: its counters go on from where they stopped.
+  const bool resumes_lost = last_outcome_ == JobOutcome::kLost && m.job_id == last_job_id_ && last_report_ &&
+                            m.first_swath == last_printed_next_;
+  if (resumes_lost) {
+    const JobReportMsg& r = *last_report_;
+    if (r.drops_per_ink.size() == drops_per_ink_.size()) drops_per_ink_ = r.drops_per_ink;
+    swaths_printed_ = r.swaths_printed;
+    feed_travel_um_ = r.feed_travel_um;
+    print_time_s_ = static_cast<double>(r.print_time_us) / 1e6;
+    cues_fired_ = r.cues_fired;
+    report_first_swath_ = r.first_swath;
+    // The last swath on the fabric is still the lost job's: the next feed starts from it.
+    printed_fabric_um_ = last_printed_fabric_um_;
+  }
   buffer_.clear();
   rx_swath_.reset();
   ignoring_swath_.reset();
@@ -307,7 +329,7 @@ void PrinterController::on_job_begin(const JobBeginMsg& m) {
   fault_ = PrinterCondition::kNone;
   pause_mask_ &= ~(1u << static_cast<unsigned>(PrinterCondition::kHostPause));
   if (sink_) sink_->job_started(m, false);
-  emit(FirmwareEventKind::kJobBegin, m.first_swath, 0, m.name);
+  emit(FirmwareEventKind::kJobBegin, m.first_swath, 0, resumes_lost ? m.name + " (resumed after loss)" : m.name);
 }
 
 void PrinterController::on_swath_header(const SwathHeaderMsg& m, std::uint32_t seq) {
@@ -374,6 +396,7 @@ void PrinterController::on_swath_data(const SwathDataMsg& m, std::uint32_t seq) 
     rx_swath_.reset();
     return reject(MessageType::kSwathData, seq, ErrorCode::kCrcMismatch, what + ": data CRC mismatch; resend the swath");
   }
+  queued_fabric_um_ += rx.msg.header.feed_before_um;
   buffer_.push_back(std::move(rx));
   rx_swath_.reset();
   ++swath_next_;
@@ -394,6 +417,63 @@ void PrinterController::set_condition(PrinterCondition condition, bool active) {
   pause_mask_ = active ? (pause_mask_ | bit) : (pause_mask_ & ~bit);
   status_dirty_ = true;
   note_state();
+}
+
+void PrinterController::lose_job(const std::string& why) {
+  if (!job_active_) return;
+  JobReportMsg r = report();
+  r.outcome = JobOutcome::kLost;
+  last_report_ = r;
+  last_job_id_ = job_.job_id;
+  last_outcome_ = JobOutcome::kLost;
+  last_printed_next_ = printed_next_;
+  last_printed_fabric_um_ = printed_fabric_um_;
+  last_fabric_pos_um_ = fabric_pos_um_;
+  emit(FirmwareEventKind::kJobEnd, printed_next_, 0, "lost: " + why);
+  job_active_ = false;
+  fault_ = PrinterCondition::kNone;
+  cue_waiting_ = 0;
+  cues_.clear();
+  buffer_.clear();
+  rx_swath_.reset();
+  ignoring_swath_.reset();
+  op_ = OpKind::kNone;
+  status_dirty_ = true;
+  if (sink_) sink_->job_finished(r);
+  note_state();
+}
+
+NonVolatileState PrinterController::nonvolatile() const {
+  NonVolatileState nv;
+  if (job_active_) {
+    nv.last_job_id = job_.job_id;
+    nv.last_outcome = JobOutcome::kLost;
+    nv.last_printed_next = printed_next_;
+    nv.last_printed_fabric_um = printed_fabric_um_;
+    nv.last_fabric_pos_um = fabric_pos_um_;
+    JobReportMsg r = report();
+    r.outcome = JobOutcome::kLost;
+    nv.last_report = r;
+    return nv;
+  }
+  nv.last_job_id = last_job_id_;
+  nv.last_outcome = last_outcome_;
+  nv.last_printed_next = last_printed_next_;
+  nv.last_printed_fabric_um = last_printed_fabric_um_;
+  nv.last_fabric_pos_um = last_fabric_pos_um_;
+  nv.last_report = last_report_;
+  return nv;
+}
+
+void PrinterController::restore(const NonVolatileState& nv) {
+  job_active_ = false;
+  last_job_id_ = nv.last_job_id;
+  last_outcome_ = nv.last_outcome;
+  last_printed_next_ = nv.last_printed_next;
+  last_printed_fabric_um_ = nv.last_printed_fabric_um;
+  last_fabric_pos_um_ = nv.last_fabric_pos_um;
+  last_report_ = nv.last_report;
+  status_dirty_ = true;
 }
 
 void PrinterController::raise_fault(PrinterCondition condition) {

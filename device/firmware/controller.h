@@ -58,6 +58,18 @@ struct FirmwareEvent {
 
 using FirmwareObserver = std::function<void(const FirmwareEvent&)>;
 
+/// What the controller keeps across a power loss (a real controller's non-volatile memory): the
+/// last job, what of it is on the fabric and where the fabric stood. A job still open when the
+/// power went is "lost" (JobOutcome::kLost); a job_begin for the same id resumes its counters.
+struct NonVolatileState {
+  std::uint64_t last_job_id = 0;
+  JobOutcome last_outcome = JobOutcome::kNone;
+  std::uint32_t last_printed_next = 0;
+  std::int64_t last_printed_fabric_um = 0;
+  std::int64_t last_fabric_pos_um = 0;
+  std::optional<JobReportMsg> last_report;  ///< the last job's counters (for kLost: up to the loss)
+};
+
 struct FirmwareOptions {
   /// Modelled seconds per wall-clock second; 0 prints as fast as data arrives (print times are
   /// still modelled and reported).
@@ -87,6 +99,14 @@ class PrinterController {
   void set_condition(PrinterCondition condition, bool active);
   /// Stops the job with a fault (kHeadStrike, kMediaJam, kEmergencyStop); the host must abort.
   void raise_fault(PrinterCondition condition);
+  /// The operator cleared the printer (or it reset): the open job and its buffered swaths are
+  /// dropped and the status reports the job as kLost, with what was printed and where the fabric
+  /// stands. The fabric does not move.
+  void lose_job(const std::string& why);
+  /// What survives a power loss now (an open job counts as lost).
+  [[nodiscard]] NonVolatileState nonvolatile() const;
+  /// Power-on with what survived (before any link traffic): the controller starts idle.
+  void restore(const NonVolatileState& state);
   void set_observer(FirmwareObserver observer) { observer_ = std::move(observer); }
   /// Where printed swaths go (may be set after construction; nullptr drops them).
   void set_sink(PrintSink* sink) { sink_ = sink; }
@@ -172,6 +192,9 @@ class PrinterController {
   std::uint32_t row_mismatches_ = 0;
   std::int64_t head_offset_min_ = 0;
   std::int64_t head_offset_max_ = 0;
+  std::int64_t printed_fabric_um_ = 0;  ///< where the fabric stood when the last swath was laid
+  std::int64_t queued_fabric_um_ = 0;   ///< fabric_pos_um_ plus the feeds of committed swaths not yet fed
+  std::uint32_t report_first_swath_ = 0;  ///< first swath of the job, kept across a resume after loss
 
   // Swath reception and buffer.
   std::optional<BufferedSwath> rx_swath_;
@@ -193,6 +216,9 @@ class PrinterController {
 
   std::uint64_t last_job_id_ = 0;
   JobOutcome last_outcome_ = JobOutcome::kNone;
+  std::uint32_t last_printed_next_ = 0;
+  std::int64_t last_printed_fabric_um_ = 0;
+  std::int64_t last_fabric_pos_um_ = 0;
   std::optional<JobReportMsg> last_report_;
 };
 

@@ -81,6 +81,7 @@ void PrinterController::print_front() {
   if (head_offset_max_ - head_offset_min_ > span) ++row_mismatches_;
   if (sink_) sink_->swath_printed(h, raw, h.first_row);
   printed_next_ = h.index + 1;
+  printed_fabric_um_ = fabric_pos_um_;
   ++swaths_printed_;
   const std::uint32_t index = h.index;
   buffer_.pop_front();
@@ -126,7 +127,8 @@ void PrinterController::advance(std::int64_t now_us) {
         continue;
       }
       emit(FirmwareEventKind::kSwathPrinting, front.msg.header.index);
-      if (fault_ != PrinterCondition::kNone || pause_mask_ != 0) break;
+      // The observer may inject a fault, a pause or the loss of the job right here.
+      if (!job_active_ || buffer_.empty() || fault_ != PrinterCondition::kNone || pause_mask_ != 0) break;
       start_op(OpKind::kPrint, pass_time_s(model_, buffer_.front().msg.header), now_us_);
       continue;
     }
@@ -153,7 +155,7 @@ JobReportMsg PrinterController::report() const {
   r.job_id = job_.job_id;
   r.name = job_.name;
   r.condition = fault_;
-  r.first_swath = job_.first_swath;
+  r.first_swath = report_first_swath_;
   r.swaths_printed = swaths_printed_;
   r.feed_travel_um = feed_travel_um_;
   r.print_time_us = static_cast<std::uint64_t>(std::llround(print_time_s_ * 1e6));
@@ -169,6 +171,9 @@ void PrinterController::finish_job(JobOutcome outcome) {
   last_report_ = r;
   last_job_id_ = job_.job_id;
   last_outcome_ = outcome;
+  last_printed_next_ = printed_next_;
+  last_printed_fabric_um_ = printed_fabric_um_;
+  last_fabric_pos_um_ = fabric_pos_um_;
   std::vector<std::uint8_t> payload;
   encode(r, payload);
   queue_frame(MessageType::kJobReport, payload);

@@ -60,8 +60,8 @@ std::string fields(const Frame& f) {
     case MessageType::kJobBegin: {
       auto m = decode_job_begin(p);
       if (!m) return "malformed: " + m.error().message;
-      std::snprintf(b, sizeof b, " job=%" PRIu64 " first_swath=%u fabric_width_px=%u name=", m->job_id,
-                    m->first_swath, m->fabric_width_px);
+      std::snprintf(b, sizeof b, " job=%" PRIu64 " first_swath=%u fabric_width_px=%u fabric_um=%" PRId64 " name=",
+                    m->job_id, m->first_swath, m->fabric_width_px, m->fabric_pos_um);
       return b + quote_text(m->name);
     }
     case MessageType::kJobEnd: {
@@ -117,11 +117,14 @@ std::string fields(const Frame& f) {
       std::snprintf(b, sizeof b,
                     " ack=%u naks=%u state=%s cond=%s job=%" PRIu64 " swath_next=%u printed_next=%u slots=%u "
                     "free=%u fabric_um=%" PRId64 " cue_waiting=%u cues=%u last_job=%" PRIu64
-                    " outcome=%s rx_crc_errors=%u rx_gaps=%u",
+                    " outcome=%s rx_crc_errors=%u rx_gaps=%u printed_um=%" PRId64 " queued_um=%" PRId64
+                    " last_printed_next=%u last_printed_um=%" PRId64 " last_fabric_um=%" PRId64,
                     m->ack_seq, m->naks, std::string(to_string(m->state)).c_str(),
                     std::string(to_string(m->condition)).c_str(), m->job_id, m->swath_next, m->printed_next,
                     m->free_slots, m->free_bytes, m->fabric_pos_um, m->cue_waiting, m->cues_registered,
-                    m->last_job_id, std::string(to_string(m->last_outcome)).c_str(), m->rx_crc_errors, m->rx_gaps);
+                    m->last_job_id, std::string(to_string(m->last_outcome)).c_str(), m->rx_crc_errors, m->rx_gaps,
+                    m->printed_fabric_um, m->queued_fabric_um, m->last_printed_next, m->last_printed_fabric_um,
+                    m->last_fabric_pos_um);
       return b;
     }
     case MessageType::kReject: {

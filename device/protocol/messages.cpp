@@ -31,7 +31,7 @@ bool valid_state(std::uint8_t v) { return v <= static_cast<std::uint8_t>(Printer
 bool valid_condition(std::uint16_t v) {
   return to_string(static_cast<PrinterCondition>(v)) != "unknown";
 }
-bool valid_outcome(std::uint8_t v) { return v <= static_cast<std::uint8_t>(JobOutcome::kFailed); }
+bool valid_outcome(std::uint8_t v) { return v <= static_cast<std::uint8_t>(JobOutcome::kLost); }
 
 }  // namespace
 
@@ -107,6 +107,7 @@ void encode(const JobBeginMsg& m, std::vector<std::uint8_t>& out) {
   w.str(m.name);
   w.u32(m.first_swath);
   w.u32(m.fabric_width_px);
+  w.i64(m.fabric_pos_um);
 }
 
 Result<JobBeginMsg> decode_job_begin(std::span<const std::uint8_t> payload) {
@@ -116,6 +117,7 @@ Result<JobBeginMsg> decode_job_begin(std::span<const std::uint8_t> payload) {
   m.name = r.str("name");
   m.first_swath = r.u32("first_swath");
   m.fabric_width_px = r.u32("fabric_width_px");
+  m.fabric_pos_um = r.i64("fabric_pos_um");
   if (auto s = finish(r, "job_begin"); !s) return fail(s.error());
   return m;
 }
@@ -270,6 +272,11 @@ void encode(const StatusMsg& m, std::vector<std::uint8_t>& out) {
   w.u8(static_cast<std::uint8_t>(m.last_outcome));
   w.u32(m.rx_crc_errors);
   w.u32(m.rx_gaps);
+  w.i64(m.printed_fabric_um);
+  w.i64(m.queued_fabric_um);
+  w.u32(m.last_printed_next);
+  w.i64(m.last_printed_fabric_um);
+  w.i64(m.last_fabric_pos_um);
 }
 
 Result<StatusMsg> decode_status(std::span<const std::uint8_t> payload) {
@@ -291,6 +298,11 @@ Result<StatusMsg> decode_status(std::span<const std::uint8_t> payload) {
   const std::uint8_t outcome = r.u8("last_outcome");
   m.rx_crc_errors = r.u32("rx_crc_errors");
   m.rx_gaps = r.u32("rx_gaps");
+  m.printed_fabric_um = r.i64("printed_fabric_um");
+  m.queued_fabric_um = r.i64("queued_fabric_um");
+  m.last_printed_next = r.u32("last_printed_next");
+  m.last_printed_fabric_um = r.i64("last_printed_fabric_um");
+  m.last_fabric_pos_um = r.i64("last_fabric_pos_um");
   if (auto s = finish(r, "status"); !s) return fail(s.error());
   if (!valid_state(state)) return malformed("status", "state " + std::to_string(state) + " out of range");
   if (!valid_condition(cond)) return malformed("status", "condition " + std::to_string(cond) + " out of range");

@@ -52,6 +52,9 @@ struct JobBeginMsg {
   std::string name;
   std::uint32_t first_swath = 0;      ///< index of the first swath the host will send (resume)
   std::uint32_t fabric_width_px = 0;  ///< width of the marker at dpi_x (0: the print width)
+  /// Where the fabric stands, from the job's start, as the job (re)opens: 0 for a new job; after the
+  /// printer lost the job, the position it reported, so cue and feed positions stay continuous.
+  std::int64_t fabric_pos_um = 0;
 };
 
 struct JobEndMsg {
@@ -110,6 +113,12 @@ struct StatusMsg {
   JobOutcome last_outcome = JobOutcome::kNone;
   std::uint32_t rx_crc_errors = 0;
   std::uint32_t rx_gaps = 0;       ///< frames that arrived out of sequence (a frame was lost)
+  // What is on the fabric, for resuming. The printer keeps these across a power loss.
+  std::int64_t printed_fabric_um = 0;  ///< fabric position at which swath printed_next-1 was laid
+  std::int64_t queued_fabric_um = 0;   ///< where the fabric will stand once every committed swath is fed
+  std::uint32_t last_printed_next = 0;       ///< last job: swaths below this index are on the fabric
+  std::int64_t last_printed_fabric_um = 0;   ///< last job: position at which its last printed swath was laid
+  std::int64_t last_fabric_pos_um = 0;       ///< last job: where the fabric stood when it ended or was lost
 };
 
 struct RejectMsg {

@@ -39,6 +39,7 @@ std::string_view to_string(JobOutcome outcome) {
     case JobOutcome::kCompleted: return "completed";
     case JobOutcome::kAborted: return "aborted";
     case JobOutcome::kFailed: return "failed";
+    case JobOutcome::kLost: return "lost";
   }
   return "unknown";
 }

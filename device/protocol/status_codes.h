@@ -35,8 +35,9 @@ enum class PrinterCondition : std::uint16_t {
   kSwathCorrupt = 20,   ///< a swath's data did not match its CRC or size after decompression
 };
 
-/// How the last job ended.
-enum class JobOutcome : std::uint8_t { kNone = 0, kCompleted = 1, kAborted = 2, kFailed = 3 };
+/// How the last job ended. kLost: the printer lost the job before it ended (power loss, buffer
+/// cleared); what it had printed and where the fabric stood survive in the status's last_* fields.
+enum class JobOutcome : std::uint8_t { kNone = 0, kCompleted = 1, kAborted = 2, kFailed = 3, kLost = 4 };
 
 /// What a cue drives on the cutting table.
 enum class CueKind : std::uint8_t { kCut = 0, kNotch = 1 };

@@ -1,6 +1,7 @@
 // host/pipeline/stage_print.cpp: the print stage: the roll RIPped band by band and each swath
 // streamed to the printer as soon as it is complete, with cutter cues at marker ends and notch
-// marks at notch positions; every acknowledged swath becomes the job's resume checkpoint.
+// marks at notch positions; every printed swath becomes the job's resume checkpoint, and the
+// session decides where a resumed job goes on from what the printer holds.
 #include <algorithm>
 
 #include "host/pipeline/printer_model.h"
@@ -116,8 +117,8 @@ Status stage_print(PipelineState& ps) {
     if (!s) return fail(s.error());
     session = std::move(*s);
     if (auto st = check_printer(*model, session->printer()); !st) return st;
-    session->on_swath_acked([&](std::uint32_t index) {
-      acked = std::max(acked, index + 1);
+    session->on_swath_acked([&](std::uint32_t index) { acked = std::max(acked, index + 1); });
+    session->on_swath_printed([&](std::uint32_t index, std::int64_t) {
       if (ps.options.on_checkpoint) ps.options.on_checkpoint(index);
     });
     JobStart start;
@@ -126,14 +127,14 @@ Status stage_print(PipelineState& ps) {
     start.first_swath = settings.first_swath_index;
     start.fabric_width_px = static_cast<std::uint32_t>(std::lround(ps.roll.width_mm / 25.4 * model->dpi_x));
     if (auto st = session->begin_job(start); !st) return st;
+    // The printer's record decides where the job goes on (it may have printed past the checkpoint).
+    settings.first_swath_index = session->resume_swath();
     for (const Cue& c : roll_cues(ps))
       if (auto st = session->queue_cue(c.kind, c.y_um, c.x_um); !st) return st;
   }
 
-  // Swaths go to the printer as the RIP completes them; feed is tracked for the final feed-out.
-  std::int64_t fed_um = 0;
+  // Swaths go to the printer as the RIP completes them.
   auto sink = [&](device::Swath&& swath) -> rip::Status {
-    fed_um += swath.header.feed_before_um;
     if (!session) return {};
     if (auto st = session->send_swath(swath, ps.cancel); !st)
       return rip::fail(st.error().code == ErrorCode::kCancelled ? rip::ErrorCode::kCancelled : rip::ErrorCode::kSwath,
@@ -153,13 +154,17 @@ Status stage_print(PipelineState& ps) {
   if (session) {
     // Feed the end of the roll past the cutter so the last cut cue fires.
     const std::int64_t end_um = std::llround(ps.roll.length_mm * 1000);
-    auto result = session->end_job(static_cast<std::uint32_t>(std::max<std::int64_t>(0, end_um - fed_um)), ps.cancel);
+    const std::int64_t fed_to_um = session->fabric_after_swaths_um();
+    auto result = session->end_job(static_cast<std::uint32_t>(std::max<std::int64_t>(0, end_um - fed_to_um)), ps.cancel);
     if (!result) return fail(result.error());
     const SessionStats& ss = result->stats;
     print["swaths_sent"] = ss.swaths_sent;
     print["swaths_acked"] = ss.swaths_acked;
     print["swaths_skipped_resume"] = ss.swaths_skipped;
     print["reconnects"] = ss.reconnects;
+    print["resumed_from_swath"] = session->resume_swath() - ss.swaths_sent;
+    print["reattached"] = ss.reattached;
+    print["lost_job_resumes"] = ss.lost_job_resumes;
     print["printer_swaths_printed"] = result->report.swaths_printed;
     print["feed_travel_um"] = result->report.feed_travel_um;
     print["print_time_s"] = static_cast<double>(result->report.print_time_us) / 1e6;

@@ -88,6 +88,10 @@ std::string PrintSession::describe() const { return transport_->describe(); }
 
 void PrintSession::on_swath_acked(std::function<void(std::uint32_t)> callback) { on_acked_ = std::move(callback); }
 
+void PrintSession::on_swath_printed(std::function<void(std::uint32_t, std::int64_t)> callback) {
+  on_printed_ = std::move(callback);
+}
+
 std::string PrintSession::job_where() const {
   const device::StatusMsg* s = link_ ? link_->status() : nullptr;
   return " (job " + std::to_string(job_.job_id) + " '" + job_.name + "': swaths below " + std::to_string(acked_next_) +
@@ -112,37 +116,22 @@ Status PrintSession::begin_job(const JobStart& job) {
   // The printer reports job id 0 as "no job", so a job numbered 0 could never be seen to finish.
   if (job.job_id == 0) return fail(ErrorCode::kInvalidArgument, "begin_job: job id 0 is reserved for \"no job\"");
   job_ = job;
-  acked_next_ = printed_next_ = swath_count_ = job.first_swath;
-  fed_um_ = 0;
+  acked_next_ = printed_next_ = swath_count_ = next_send_ = job.first_swath;
+  planned_end_um_ = 0;
   ending_ = false;
-  unacked_.clear();
-  in_printer_.clear();
+  finished_on_printer_ = false;
+  reopen_seq_ = 0;
+  unprinted_.clear();
+  feed_fix_swath_.reset();
+  lost_at_um_.reset();
+  cues_.clear();
   cues_sent_ = 0;
   stats_ = SessionStats{};
-  device::JobBeginMsg m{job.job_id, job.name, job.first_swath, job.fabric_width_px};
-  for (int attempt = 0; attempt < 2; ++attempt) {
-    if (auto s = link_->send_msg(device::MessageType::kJobBegin, m); !s) return fail(from_device(s.error(), "job_begin"));
-    auto st = link_->query_status(milliseconds(5000));
-    if (!st) return fail(from_device(st.error(), "job_begin"));
-    if (auto r = link_->take_reject()) {
-      if (attempt == 0 && r->refused == device::MessageType::kJobBegin && st->job_id != 0) {
-        // A job left open by an earlier session that died: this host owns the printer.
-        session_log()->warn("printer holds job {} from an earlier session; aborting it", st->job_id);
-        device::AbortMsg abort{"stale job from an earlier session"};
-        if (auto s = link_->send_msg(device::MessageType::kAbort, abort); !s) return fail(from_device(s.error(), "abort"));
-        continue;
-      }
-      return fail(ErrorCode::kPrinter, "printer refused job " + std::to_string(job.job_id) + ": " + r->message);
-    }
-    if (st->job_id != job.job_id)
-      return fail(ErrorCode::kPrinter, "printer did not open job " + std::to_string(job.job_id));
-    active_ = true;
-    seen_status_ = 0;
-    if (auto a = absorb_status(); !a) return a;
-    session_log()->info("job {} '{}' open on the printer from swath {}", job.job_id, job.name, acked_next_);
-    return {};
-  }
-  return fail(ErrorCode::kPrinter, "printer refused job " + std::to_string(job.job_id));
+  // Ask first: the printer may still hold this job, or remember how it ended.
+  auto st = link_->query_status(milliseconds(5000));
+  if (!st) return fail(from_device(st.error(), "job_begin"));
+  (void)link_->take_reject();
+  return attach_or_open(*st);
 }
 
 Status PrintSession::queue_cue(device::CueKind kind, std::int64_t position_um, std::int32_t x_um) {
@@ -152,12 +141,22 @@ Status PrintSession::queue_cue(device::CueKind kind, std::int64_t position_um, s
   c.kind = kind;
   c.position_um = position_um;
   c.x_um = x_um;
+  // Resumed after the printer lost the job: the fabric has passed the cues behind it.
+  if (finished_on_printer_ || (lost_at_um_ && position_um <= *lost_at_um_)) {
+    c.fired = true;
+    c.fired_at_um = position_um;
+    cues_.push_back(c);
+    cues_sent_ = c.id;
+    return {};
+  }
   cues_.push_back(c);
   device::CutterCueMsg m{c.id, kind, position_um, x_um};
   for (int attempt = 0; attempt < 3; ++attempt) {
     auto s = link_->send_msg(device::MessageType::kCutterCue, m);
     if (s) {
       cues_sent_ = c.id;
+      const device::StatusMsg* st = link_->status();
+      if (st && st->job_id == job_.job_id && st->cue_waiting == c.id) return fire_cue(c.id, nullptr);
       return service(milliseconds(0), nullptr);
     }
     if (s.error().code != device::ErrorCode::kDisconnected) return fail(from_device(s.error(), "cue " + std::to_string(c.id)));
@@ -167,12 +166,26 @@ Status PrintSession::queue_cue(device::CueKind kind, std::int64_t position_um, s
   return fail(ErrorCode::kPrinter, "cue " + std::to_string(c.id) + ": link kept failing");
 }
 
+device::Status PrintSession::send_wire_swath(const device::Swath& swath) {
+  if (!feed_fix_swath_ || *feed_fix_swath_ != swath.header.index) return link_->send_swath(swath);
+  // The planned feed starts where the previous swath was laid; the fabric stands elsewhere.
+  const std::int64_t feed_um = static_cast<std::int64_t>(swath.header.feed_before_um) + feed_fix_um_;
+  if (feed_um < 0)
+    return device::fail(device::ErrorCode::kInvalidArgument,
+                        "the printer lost the job with the fabric " + mm(-feed_um) + " past where swath " +
+                            std::to_string(swath.header.index) +
+                            " starts, and fabric cannot feed back: cut off the partial print and print the job again");
+  device::Swath fixed = swath;
+  fixed.header.feed_before_um = static_cast<std::uint32_t>(feed_um);
+  return link_->send_swath(fixed);
+}
+
 Status PrintSession::transmit(const device::Swath& swath) {
-  auto s = link_->send_swath(swath);
+  auto s = send_wire_swath(swath);
   if (s) return {};
   if (s.error().code != device::ErrorCode::kDisconnected)
     return fail_job(ErrorCode::kPrinter, "sending swath " + std::to_string(swath.header.index) + ": " + s.error().message);
-  // The swath is already among the unacknowledged ones: the recovery resends it with them.
+  // The swath is already among the unprinted ones: the recovery resends it with them.
   return recover(s.error());
 }
 
@@ -180,32 +193,37 @@ Status PrintSession::send_swath(const device::Swath& swath, const geometry::Canc
   if (!active_) return fail(ErrorCode::kInvalidArgument, "send_swath: no job open");
   const std::uint32_t idx = swath.header.index;
   const std::size_t bytes = swath.data.size();
-  swath_count_ = std::max(swath_count_, idx + 1);
-  fed_um_ += swath.header.feed_before_um;
-  if (idx < acked_next_) {
+  if (idx < next_send_) {
+    // Resuming: on the fabric or in the printer already.
+    swath_count_ = std::max(swath_count_, idx + 1);
     ++stats_.swaths_skipped;
     return service(milliseconds(0), &cancel);
   }
-  const std::uint32_t expected = acked_next_ + static_cast<std::uint32_t>(unacked_.size());
-  if (idx != expected)
+  if (idx != next_send_)
     return fail_job(ErrorCode::kInvalidArgument,
-                    "swath " + std::to_string(idx) + " handed in where swath " + std::to_string(expected) + " was due");
+                    "swath " + std::to_string(idx) + " handed in where swath " + std::to_string(next_send_) + " was due");
+  if (finished_on_printer_)
+    return fail_job(ErrorCode::kPrinter, "swath " + std::to_string(idx) + " handed in, but the printer completed job " +
+                                             std::to_string(job_.job_id) + " after " + std::to_string(next_send_) +
+                                             " swaths: the job's plan differs from what was printed");
   if (bytes > identity_.swath_buffer_bytes)
     return fail_job(ErrorCode::kPrinter, "swath " + std::to_string(idx) + ": " + std::to_string(bytes) +
                                              " bytes exceed the printer's " +
                                              std::to_string(identity_.swath_buffer_bytes) + "-byte swath buffer");
+  swath_count_ = std::max(swath_count_, idx + 1);
+  ++next_send_;
+  planned_end_um_ += swath.header.feed_before_um;
   // Credits: never more swaths or bytes in the printer than its buffer holds.
   const auto t0 = Clock::now();
   for (;;) {
     std::size_t held = 0;
-    for (const auto& b : in_printer_) held += b.bytes;
-    if (in_printer_.size() < identity_.swath_slots && held + bytes <= identity_.swath_buffer_bytes) break;
+    for (const auto& b : unprinted_) held += b.data.size();
+    if (unprinted_.size() < identity_.swath_slots && held + bytes <= identity_.swath_buffer_bytes) break;
     if (auto s = service(milliseconds(20), &cancel); !s) return s;
     if (!active_) return fail(ErrorCode::kPrinter, "job ended while waiting for printer credit");
   }
   stats_.credit_wait_s += std::chrono::duration<double>(Clock::now() - t0).count();
-  unacked_.push_back(swath);
-  in_printer_.push_back(InBuffer{idx, bytes});
+  unprinted_.push_back(swath);
   if (auto s = transmit(swath); !s) return s;
   ++stats_.swaths_sent;
   stats_.bytes_sent += bytes;
@@ -217,7 +235,7 @@ Result<JobResult> PrintSession::end_job(std::uint32_t final_feed_um, const geome
   ending_ = true;
   final_feed_um_ = final_feed_um;
   device::JobEndMsg m{swath_count_, final_feed_um};
-  for (int attempt = 0;; ++attempt) {
+  for (int attempt = 0; !finished_on_printer_; ++attempt) {
     auto s = link_->send_msg(device::MessageType::kJobEnd, m);
     if (s) break;
     if (s.error().code != device::ErrorCode::kDisconnected || attempt == 3)

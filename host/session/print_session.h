@@ -1,8 +1,10 @@
 // host/session/print_session.h: the host's print session: opens the printer (USB through
 // drivers/, plus the cutting table's GPIO lines), runs a job swath by swath within the printer's
 // credits, fires cutter cues and notch marks when the printer reaches them, reports every
-// acknowledged swath (the pipeline's checkpoint), survives an unplug/replug by reconnecting and
-// resuming from the last acknowledged swath, and returns the printer's counters at the end.
+// printed swath (the pipeline's checkpoint), survives an unplug/replug or a host restart by asking
+// the printer which job and swath it holds and resuming there, resumes a job the printer lost
+// (power loss, buffer cleared) from its last printed swath with the fabric position continuous,
+// and returns the printer's counters at the end.
 #pragma once
 
 #include <chrono>
@@ -32,7 +34,10 @@ struct PrinterConfig {
   bool use_gpio = true;  ///< without GPIO, cues are acknowledged without firing a line
   drivers::GpioConfig gpio;
   std::chrono::milliseconds open_timeout{5000};
-  std::chrono::milliseconds reconnect_timeout{15000};  ///< how long an unplugged printer may stay away
+  /// How long an unplugged printer may stay away before the job fails (a printer re-enumerates in
+  /// a second or two; one that stays away longer needs the operator). Every caller (printctl run,
+  /// printd, link-job) gets this limit unless it sets another.
+  std::chrono::milliseconds reconnect_timeout{5000};
   std::chrono::milliseconds cutter_ready_timeout{10000};
   std::chrono::microseconds cue_pulse{10000};          ///< width of the cue and notch pulses
   std::chrono::milliseconds max_pause{std::chrono::minutes(30)};  ///< longest printer pause tolerated
@@ -44,7 +49,9 @@ struct PrinterConfig {
 struct JobStart {
   std::uint64_t job_id = 0;
   std::string name;
-  std::uint32_t first_swath = 0;      ///< resume: swaths below this were acknowledged before
+  /// The host's checkpoint: swaths below this were printed in an earlier attempt (0: a fresh job).
+  /// The printer's own record decides where the job resumes (see resume_swath()).
+  std::uint32_t first_swath = 0;
   std::uint32_t fabric_width_px = 0;  ///< marker width at the printer's dpi_x (0: print width)
 };
 
@@ -69,6 +76,8 @@ struct SessionStats {
   std::uint64_t bytes_sent = 0;      ///< swath data bytes, first sends only
   double credit_wait_s = 0;          ///< time spent waiting for printer buffer space
   double pause_s = 0;                ///< time the printer spent paused (ink, cover, media)
+  std::uint32_t lost_job_resumes = 0;  ///< times the printer lost the job and it resumed where it stopped
+  bool reattached = false;           ///< begin_job found the job still open on the printer
   device::LinkStats link;
 };
 
@@ -92,12 +101,25 @@ class PrintSession {
 
   /// What the printer said it is at the handshake.
   [[nodiscard]] const device::IdentifyMsg& printer() const;
-  /// Called with each swath index the printer acknowledges (received and checked), in order:
-  /// the pipeline stores it as the resume checkpoint.
+  /// Called with each swath index the printer acknowledges (received and checked), in order.
   void on_swath_acked(std::function<void(std::uint32_t index)> callback);
+  /// Called when the printer reports swaths laid on the fabric: the highest printed index and the
+  /// fabric position (um from the job's start) it was laid at. The pipeline's resume checkpoint.
+  void on_swath_printed(std::function<void(std::uint32_t index, std::int64_t fabric_um)> callback);
 
-  /// Opens a job on the printer. With first_swath > 0, send_swath() skips lower indices.
+  /// Opens a job on the printer, after asking it what it holds of this job: the same job still
+  /// open (a host restart or reconnect) is re-attached and resumes after the swaths the printer
+  /// received; a job it lost resumes from its last printed swath, with the feed to the right
+  /// fabric position; a job it completed is not printed again (end_job() returns its report). A
+  /// checkpoint the printer has no record of fails with an operator message (kPrinter).
   Status begin_job(const JobStart& job);
+  /// The first swath index the pipeline must hand in after begin_job() (lower ones are skipped).
+  [[nodiscard]] std::uint32_t resume_swath() const { return next_send_; }
+  /// True when begin_job() found the job already completed on the printer.
+  [[nodiscard]] bool finished_on_printer() const { return finished_on_printer_; }
+  /// Fabric position (um from the job's start) once every swath handed in so far is fed: the
+  /// final feed is the marker's end minus this.
+  [[nodiscard]] std::int64_t fabric_after_swaths_um() const { return planned_end_um_; }
   /// Sends one swath (indices consecutive from 0, or skipped if already acknowledged), blocking
   /// while the printer's buffer is full. Handles cues, pauses, faults, the emergency stop and
   /// reconnects meanwhile. Fails with kCancelled (the job is aborted on the printer) or kPrinter.
@@ -120,6 +142,13 @@ class PrintSession {
   Status connect();
   Status service(std::chrono::milliseconds wait, const geometry::CancelToken* cancel);
   Status recover(const device::Error& cause);
+  // print_session_resume.cpp: asking the printer what it holds and resuming from it.
+  Status attach_or_open(const device::StatusMsg& st);
+  Status open_on_printer(std::uint32_t first_swath, std::int64_t fabric_pos_um);
+  Status resume_lost_job(const device::StatusMsg& st, bool& disconnected);
+  Status resend_after_reconnect(const device::StatusMsg& st, bool& again);
+  device::Status send_wire_swath(const device::Swath& swath);
+  void note_printed(const device::StatusMsg& st);
   Status absorb_status();
   Status fire_cue(std::uint32_t id, const geometry::CancelToken* cancel);
   Status check_emergency_stop();
@@ -135,6 +164,7 @@ class PrintSession {
   std::unique_ptr<drivers::GpioLines> gpio_;
   device::IdentifyMsg identity_;
   std::function<void(std::uint32_t)> on_acked_;
+  std::function<void(std::uint32_t, std::int64_t)> on_printed_;
 
   bool active_ = false;
   bool ending_ = false;
@@ -142,14 +172,19 @@ class PrintSession {
   std::uint32_t acked_next_ = 0;
   std::uint32_t printed_next_ = 0;
   std::uint32_t swath_count_ = 0;      ///< one past the highest index handed in
-  std::int64_t fed_um_ = 0;            ///< feeds of all swaths handed in
+  std::uint32_t next_send_ = 0;        ///< index the next swath handed in must have to be sent
+  std::int64_t planned_end_um_ = 0;    ///< fabric position after the swaths handed in (as planned)
   std::uint32_t final_feed_um_ = 0;
-  std::deque<device::Swath> unacked_;  ///< sent, not yet acknowledged: resent after a reconnect
-  struct InBuffer {
-    std::uint32_t index;
-    std::size_t bytes;
-  };
-  std::deque<InBuffer> in_printer_;    ///< sent, not yet printed: what holds printer credit
+  /// Sent, not yet printed: they hold printer credit, and are resent after a reconnect (those not
+  /// acknowledged) or after the printer lost the job (all of them).
+  std::deque<device::Swath> unprinted_;
+  /// Feed correction for swath `feed_fix_swath_` on the wire: the printer lost the job with the
+  /// fabric standing elsewhere than where that swath's planned feed starts.
+  std::optional<std::uint32_t> feed_fix_swath_;
+  std::int64_t feed_fix_um_ = 0;
+  std::optional<std::int64_t> lost_at_um_;  ///< resumed after a loss: cues up to here were passed
+  bool finished_on_printer_ = false;
+  std::uint32_t reopen_seq_ = 0;  ///< link sequence of the job_begin that reopened a lost job
   std::vector<CueRecord> cues_;
   std::uint32_t cues_sent_ = 0;        ///< cues with id <= this are on the printer
   std::uint64_t seen_status_ = 0;

@@ -46,7 +46,14 @@ Status PrintSession::service(milliseconds wait, const geometry::CancelToken* can
 
 Status PrintSession::absorb_status() {
   if (auto r = link_->take_reject()) {
-    if (active_)
+    // Frames sent before the printer lost the job are refused for want of a job: not an error,
+    // the resume below (or already done) sends them again.
+    const device::StatusMsg* now = link_->status();
+    const bool lost_now = now && now->job_id != job_.job_id && now->last_job_id == job_.job_id &&
+                          now->last_outcome == device::JobOutcome::kLost;
+    if (active_ && r->code == device::ErrorCode::kBadState && (lost_now || r->seq < reopen_seq_)) {
+      session_log()->info("printer refused {} sent before it lost the job: {}", device::to_string(r->refused), r->message);
+    } else if (active_)
       return fail_job(ErrorCode::kPrinter, "printer refused " + std::string(device::to_string(r->refused)) + ": " +
                                                r->message);
     session_log()->warn("printer refused {}: {}", device::to_string(r->refused), r->message);
@@ -60,16 +67,22 @@ Status PrintSession::absorb_status() {
     paused_since_.reset();
     session_log()->info("printer resumed");
   }
-  if (!active_ || s.job_id != job_.job_id) return {};
-  // Checkpoints: every swath the printer has committed, in order.
+  if (!active_) return {};
+  // The printer dropped the job (buffer cleared, or power lost while we were connected).
+  if (s.job_id != job_.job_id && s.last_job_id == job_.job_id && s.last_outcome == device::JobOutcome::kLost) {
+    bool disconnected = false;
+    auto r = resume_lost_job(s, disconnected);
+    if (!r && disconnected) return recover(device::Error{device::ErrorCode::kDisconnected, r.error().message});
+    return r;
+  }
+  if (s.job_id != job_.job_id) return {};
+  // Checkpoints: every swath the printer has committed, in order, then every one it printed.
   while (acked_next_ < s.swath_next) {
-    if (!unacked_.empty() && unacked_.front().header.index == acked_next_) unacked_.pop_front();
     ++stats_.swaths_acked;
     if (on_acked_) on_acked_(acked_next_);
     ++acked_next_;
   }
-  printed_next_ = std::max(printed_next_, s.printed_next);
-  while (!in_printer_.empty() && in_printer_.front().index < printed_next_) in_printer_.pop_front();
+  note_printed(s);
 
   if (s.state == device::PrinterState::kFault)
     return fail_job(ErrorCode::kPrinter, "printer fault: " + std::string(device::describe(s.condition)));
@@ -88,7 +101,12 @@ Status PrintSession::absorb_status() {
 
 Status PrintSession::fire_cue(std::uint32_t id, const geometry::CancelToken* cancel) {
   auto it = std::find_if(cues_.begin(), cues_.end(), [&](const CueRecord& c) { return c.id == id; });
-  if (it == cues_.end()) return fail_job(ErrorCode::kPrinter, "printer stopped at unknown cue " + std::to_string(id));
+  if (it == cues_.end()) {
+    // A printer re-attached after a host restart may stand at a cue this session has not queued
+    // yet: queue_cue() fires it once it is known.
+    if (id > cues_.size()) return {};
+    return fail_job(ErrorCode::kPrinter, "printer stopped at unknown cue " + std::to_string(id));
+  }
   CueRecord& cue = *it;
   char pos[64];
   std::snprintf(pos, sizeof pos, "%s at %.1f mm", std::string(device::to_string(cue.kind)).c_str(),
@@ -141,54 +159,35 @@ Status PrintSession::recover(const device::Error& cause) {
     }
     identity_ = *id;
     if (!active_) break;
-    // Re-attach to the job: the printer kept it, its buffer and its fabric position.
-    device::JobBeginMsg m{job_.job_id, job_.name, acked_next_, job_.fabric_width_px};
-    std::optional<device::StatusMsg> st;
-    device::Error e;
+    // Ask the printer what it holds of the job, then re-attach or resume what it lost.
+    auto q = link_->query_status(milliseconds(5000));
+    if (!q) {
+      if (q.error().code == device::ErrorCode::kDisconnected && attempt < 3) continue;
+      return fail_job(ErrorCode::kPrinter, "asking the printer after reconnect: " + q.error().message);
+    }
+    const device::StatusMsg st = *q;
+    bool again = false;
+    if (st.job_id != job_.job_id) {
+      if (st.last_job_id == job_.job_id && st.last_outcome == device::JobOutcome::kCompleted && ending_) break;
+      if (st.last_job_id == job_.job_id && st.last_outcome == device::JobOutcome::kLost) {
+        bool disconnected = false;
+        auto r = resume_lost_job(st, disconnected);
+        if (r) break;
+        if (!disconnected || attempt >= 3) return active_ ? fail_job(r.error().code, r.error().message) : r;
+        continue;
+      }
+      return fail_job(ErrorCode::kPrinter, "printer lost the job while unplugged and keeps no record of it (it reports " +
+                                               (st.job_id ? "job " + std::to_string(st.job_id) : std::string("no job")) +
+                                               "): check the fabric, cut off the partial print and print the job again");
+    }
+    device::JobBeginMsg m{job_.job_id, job_.name, acked_next_, job_.fabric_width_px, st.fabric_pos_um};
     if (auto sent = link_->send_msg(device::MessageType::kJobBegin, m); !sent) {
-      e = sent.error();
-    } else if (auto q = link_->query_status(milliseconds(5000)); !q) {
-      e = q.error();
-    } else {
-      st = *q;
-    }
-    if (!st) {
-      if (e.code == device::ErrorCode::kDisconnected && attempt < 3) continue;
-      return fail_job(ErrorCode::kPrinter, "re-attaching after reconnect: " + e.message);
-    }
-    if (st->job_id != job_.job_id) {
-      if (ending_ && st->last_job_id == job_.job_id && st->last_outcome == device::JobOutcome::kCompleted) break;
-      return fail_job(ErrorCode::kPrinter, "printer lost the job while unplugged");
+      if (sent.error().code == device::ErrorCode::kDisconnected && attempt < 3) continue;
+      return fail_job(ErrorCode::kPrinter, "re-attaching after reconnect: " + sent.error().message);
     }
     seen_status_ = 0;
     if (auto a = absorb_status(); !a) return a;
-    // Cues the printer never registered, then every swath it has not acknowledged.
-    bool again = false;
-    for (const auto& c : cues_) {
-      if (c.id <= st->cues_registered || c.id > cues_sent_) continue;
-      device::CutterCueMsg cm{c.id, c.kind, c.position_um, c.x_um};
-      if (auto s = link_->send_msg(device::MessageType::kCutterCue, cm); !s) {
-        again = s.error().code == device::ErrorCode::kDisconnected;
-        if (!again) return fail_job(ErrorCode::kPrinter, "re-registering cue: " + s.error().message);
-        break;
-      }
-    }
-    for (const auto& sw : unacked_) {
-      if (again || sw.header.index < acked_next_) continue;
-      if (auto s = link_->send_swath(sw); !s) {
-        again = s.error().code == device::ErrorCode::kDisconnected;
-        if (!again) return fail_job(ErrorCode::kPrinter, "resending swath: " + s.error().message);
-        break;
-      }
-      ++stats_.swaths_resent;
-    }
-    if (!again && ending_) {
-      device::JobEndMsg end{swath_count_, final_feed_um_};
-      if (auto s = link_->send_msg(device::MessageType::kJobEnd, end); !s) {
-        again = s.error().code == device::ErrorCode::kDisconnected;
-        if (!again) return fail_job(ErrorCode::kPrinter, "resending job end: " + s.error().message);
-      }
-    }
+    if (auto r = resend_after_reconnect(st, again); !r) return r;
     if (!again) break;
     if (attempt >= 3) return fail_job(ErrorCode::kPrinter, "printer kept disconnecting during recovery");
   }

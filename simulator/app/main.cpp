@@ -28,6 +28,10 @@ int main(int argc, char** argv) {
   run->add_flag("--no-fabric", [&](std::int64_t) { opt.fabric = false; }, "Do not lay drops or write images");
   run->add_option("--reap-hold-ms", opt.reap_hold_ms, "Hold empty URB reaps this long (0: answer at once)")
       ->check(CLI::Range(0u, 100u));
+  std::string state;
+  run->add_option("--state", state,
+                  "The printer's non-volatile memory file: kept across runs, so a printsim killed mid-job "
+                  "comes back as a printer that lost power");
   run->add_flag("-v,--verbose", verbose, "Log devices, jobs and faults to stderr");
   run->add_option("command", opt.command, "Command and arguments (after --)")->required();
 
@@ -45,6 +49,7 @@ int main(int argc, char** argv) {
   if (verbose) tp::sim::sim_log()->set_level(spdlog::level::info);
   if (!scenario.empty()) opt.scenario = scenario;
   if (!model.empty()) opt.printer_model = model;
+  if (!state.empty()) opt.state_file = state;
   auto r = tp::sim::run_printsim(opt);
   if (!r) {
     std::fprintf(stderr, "printsim: %s\n", r.error().what().c_str());

@@ -108,6 +108,11 @@ gboolean GpioChip::on_ioctl(UMockdevIoctlBase*, UMockdevIoctlClient* client, gpo
 void GpioChip::on_vanished(UMockdevIoctlBase*, UMockdevIoctlClient* client, gpointer self) {
   auto* chip = static_cast<GpioChip*>(self);
   std::lock_guard guard(chip->lock_);
+  // A process that dies (even by SIGKILL) closes its chip fd too: its line handles go back.
+  std::vector<std::uint32_t> owned;
+  for (const auto& [id, h] : chip->handles_)
+    if (h.requester == client) owned.push_back(id);
+  for (std::uint32_t id : owned) chip->release(id);
   auto it = chip->bound_.find(client);
   if (it == chip->bound_.end()) return;
   // Closing a line handle's fd gives its lines back, as the kernel does.
@@ -123,6 +128,7 @@ void GpioChip::release(std::uint32_t handle) {
     lines_[off].consumer.clear();
     lines_[off].handle = 0;
   }
+  if (it->second.requester) g_object_unref(it->second.requester);
   handles_.erase(it);
 }
 
@@ -184,6 +190,11 @@ void GpioChip::request_handle(UMockdevIoctlClient* client) {
   const bool out = req->flags & GPIOHANDLE_REQUEST_OUTPUT;
   const bool in = req->flags & GPIOHANDLE_REQUEST_INPUT;
   if (req->lines == 0 || req->lines > GPIOHANDLES_MAX || (out && in)) return done(-1, EINVAL);
+  // Lines of a process that died (SIGKILL) without its connection being seen to vanish go back.
+  std::vector<std::uint32_t> stale;
+  for (const auto& [id, h] : handles_)
+    if (h.requester && !umockdev_ioctl_client_get_connected(h.requester)) stale.push_back(id);
+  for (std::uint32_t id : stale) release(id);
   for (__u32 i = 0; i < req->lines; ++i) {
     if (req->lineoffsets[i] >= lines_.size()) return done(-1, EINVAL);
     if (lines_[req->lineoffsets[i]].requested) return done(-1, EBUSY);
@@ -191,6 +202,7 @@ void GpioChip::request_handle(UMockdevIoctlClient* client) {
   const std::uint32_t id = next_handle_++;
   Handle h;
   h.output = out;
+  h.requester = UMOCKDEV_IOCTL_CLIENT(g_object_ref(client));
   for (__u32 i = 0; i < req->lines; ++i) {
     Line& l = lines_[req->lineoffsets[i]];
     h.offsets.push_back(req->lineoffsets[i]);

@@ -53,6 +53,7 @@ class GpioChip {
   };
   struct Handle {
     std::vector<std::uint32_t> offsets;
+    UMockdevIoctlClient* requester = nullptr;  ///< the chip connection that asked for it
     bool output = false;
   };
 

@@ -82,7 +82,8 @@ void JobRecorder::writer_loop() {
 
 std::filesystem::path JobRecorder::job_dir(const device::JobBeginMsg& job) const {
   if (!options_.job_dirs) return options_.out_dir;
-  return options_.out_dir / safe_name(job.name.empty() ? "job-" + std::to_string(job.job_id) : job.name);
+  // By id first: two jobs with one name must not overwrite each other's fabric.
+  return options_.out_dir / (std::to_string(job.job_id) + "-" + safe_name(job.name.empty() ? "job" : job.name));
 }
 
 void JobRecorder::job_started(const device::JobBeginMsg& job, bool resumed) {
@@ -90,8 +91,16 @@ void JobRecorder::job_started(const device::JobBeginMsg& job, bool resumed) {
     ++resumes_;
     return;
   }
-  if (active_) close();
+  if (active_ && lost_ && job.job_id == job_.job_id) {
+    // The printer lost the job and the host reopened it: printing goes on on the same fabric.
+    lost_ = false;
+    ++resumes_;
+    return;
+  }
+  if (active_) finish(controller_.current_report(), lost_ ? "lost" : "incomplete");
   active_ = true;
+  lost_ = false;
+  losses_ = 0;
   job_ = job;
   started_s_ = clock_s_();
   resumes_ = 0;
@@ -121,11 +130,45 @@ void JobRecorder::job_started(const device::JobBeginMsg& job, bool resumed) {
     return;
   }
   canvas_ = std::move(*canvas);
+  if (options_.persist) start_journal(job);
+}
+
+void JobRecorder::start_journal(const device::JobBeginMsg& job) {
+  const std::filesystem::path path = dir_ / ".fabric.journal";
+  journal_.reset();
+  if (job.first_swath > 0) {
+    // A job resumed after printsim itself stopped: the fabric it laid before is still there.
+    std::uint32_t replayed = 0;
+    auto j = FabricJournal::reopen(path, job.job_id, job.first_swath,
+                                   [&](const device::SwathHeader& h, std::span<const std::uint8_t> raw) {
+                                     canvas_->lay(h, raw, h.first_row);
+                                     ++replayed;
+                                   });
+    if (j) {
+      journal_ = std::move(*j);
+      ++resumes_;
+      events_.push_back(Event{clock_s_(), "fabric_resumed", job.first_swath, 0, controller_.fabric_pos_um(),
+                              std::to_string(replayed) + " swaths already on the fabric"});
+      return;
+    }
+    sim_log()->warn("{}", j.error().what());
+  }
+  auto j = FabricJournal::create(path, job.job_id);
+  if (!j) {
+    sim_log()->error("{}", j.error().what());
+    return;
+  }
+  journal_ = std::move(*j);
 }
 
 void JobRecorder::swath_printed(const device::SwathHeader& header, std::span<const std::uint8_t> raw,
                                 std::int64_t fabric_row) {
   if (canvas_) canvas_->lay(header, raw, fabric_row);
+  if (journal_)
+    if (auto s = journal_->append(header, raw); !s) {
+      sim_log()->error("{}", s.error().what());
+      journal_.reset();
+    }
 }
 
 void JobRecorder::gpio_edge(const std::string& line, bool level) {
@@ -147,11 +190,17 @@ void JobRecorder::fault_injected(const std::string& what) {
 }
 
 void JobRecorder::job_finished(const device::JobReportMsg& report) {
+  if (report.outcome == device::JobOutcome::kLost && active_) {
+    // The fabric stays in the printer: a resume of the job goes on printing on it.
+    lost_ = true;
+    ++losses_;
+    return;
+  }
   finish(report, std::string(device::to_string(report.outcome)));
 }
 
 void JobRecorder::close() {
-  if (active_) finish(controller_.current_report(), "incomplete");
+  if (active_) finish(controller_.current_report(), lost_ ? "lost" : "incomplete", true);
   using nlohmann::json;
   json run;
   json edges = json::array();
@@ -171,9 +220,12 @@ void JobRecorder::close() {
   writer_cv_.wait(lock, [&] { return writer_queue_.empty(); });
 }
 
-void JobRecorder::finish(const device::JobReportMsg& report, const std::string& outcome) {
+void JobRecorder::finish(const device::JobReportMsg& report, const std::string& outcome, bool keep_journal) {
   if (!active_) return;
   active_ = false;
+  // An open job's journal stays for a printsim that resumes it; an ended job's goes.
+  if (journal_ && !keep_journal) journal_->discard();
+  journal_.reset();
   using nlohmann::json;
   const auto& m = controller_.model();
   json j;
@@ -187,6 +239,7 @@ void JobRecorder::finish(const device::JobReportMsg& report, const std::string& 
               {"condition", std::string(device::to_string(report.condition))},
               {"first_swath", report.first_swath},
               {"resumes", resumes_},
+              {"losses", losses_},
               {"unplugs", unplugs_},
               {"started_s", started_s_},
               {"finished_s", clock_s_()}};

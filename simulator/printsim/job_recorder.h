@@ -10,12 +10,14 @@
 #include <functional>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
 
 #include "device/firmware/controller.h"
 #include "simulator/fabric/fabric_canvas.h"
+#include "simulator/printsim/fabric_journal.h"
 
 namespace tp::sim {
 
@@ -23,8 +25,11 @@ struct UsbCounters;
 
 struct RecorderOptions {
   std::filesystem::path out_dir;
-  bool job_dirs = false;  ///< each job in <out_dir>/<job name>/ (daemon runs) instead of out_dir itself
+  bool job_dirs = false;  ///< each job in <out_dir>/<job id>-<job name>/ (daemon runs) instead of out_dir itself
   bool fabric = true;     ///< lay drops and write images (off for link benchmarks)
+  /// Keep each open job's printed swaths in a journal beside its fabric, so a printsim that is
+  /// killed (power loss) and started again goes on with the same fabric (printsim --state).
+  bool persist = false;
 };
 
 class JobRecorder final : public device::PrintSink {
@@ -54,7 +59,8 @@ class JobRecorder final : public device::PrintSink {
   [[nodiscard]] std::string error() const;
 
  private:
-  void finish(const device::JobReportMsg& report, const std::string& outcome);
+  void finish(const device::JobReportMsg& report, const std::string& outcome, bool keep_journal = false);
+  void start_journal(const device::JobBeginMsg& job);
   // Images are written on a worker thread: a long roll takes a while to compress, and the
   // printer must keep answering the host meanwhile.
   void write_async(std::function<void()> work);
@@ -72,6 +78,9 @@ class JobRecorder final : public device::PrintSink {
   double started_s_ = 0;
   int resumes_ = 0;
   int unplugs_ = 0;
+  int losses_ = 0;      ///< times the printer lost this job (power loss, buffer cleared)
+  bool lost_ = false;   ///< the printer lost the job; the fabric stays for its resume
+  std::optional<FabricJournal> journal_;
   struct Edge {
     std::string line;
     bool level;

@@ -18,6 +18,7 @@
 #include "simulator/internal/sim_log.h"
 #include "simulator/internal/usb_printer_device.h"
 #include "simulator/printsim/job_recorder.h"
+#include "simulator/printsim/printer_memory.h"
 #include "simulator/scenario/scenario.h"
 
 namespace tp::sim {
@@ -131,6 +132,19 @@ struct Sim {
         gpio->drive_input("cutter-ready", false);
         schedule(f.duration_ms, [this] { gpio->drive_input("cutter-ready", true); });
         break;
+      case FaultType::kBufferClear: controller->lose_job("buffer cleared by the operator"); break;
+      case FaultType::kPowerLoss:
+        // The job and the buffer go at once; the USB device disappears with the power.
+        controller->lose_job("power loss");
+        schedule(0, [this, ms = f.duration_ms] {
+          if (!usb) return;
+          usb->unplug();
+          controller->link_reset();
+          recorder->note_unplug();
+          retired.push_back(std::move(usb));
+          schedule(ms, [this] { replug(); });
+        });
+        break;
       case FaultType::kEmergencyStop:
         gpio->drive_input("emergency-stop", true);
         controller->raise_fault(device::PrinterCondition::kEmergencyStop);
@@ -141,8 +155,17 @@ struct Sim {
 
   static bool link_fault(FaultType t) { return t == FaultType::kStall || t == FaultType::kUnplug; }
 
+  // What the printer keeps across a power loss goes to --state whenever it changes.
+  void save_memory(const device::FirmwareEvent& e) {
+    using K = device::FirmwareEventKind;
+    if (!opt.state_file) return;
+    if (e.kind != K::kJobBegin && e.kind != K::kSwathPrinted && e.kind != K::kFeed && e.kind != K::kStateChanged) return;
+    if (auto s = save_printer_memory(*opt.state_file, controller->nonvolatile()); !s) sim_log()->error("{}", s.error().what());
+  }
+
   void on_event(const device::FirmwareEvent& e) {
     recorder->firmware_event(e);
+    save_memory(e);
     using K = device::FirmwareEventKind;
     if (e.kind == K::kJobBegin && !job_seen) {
       job_seen = true;
@@ -195,7 +218,14 @@ Result<int> run_printsim(const SimOptions& options) {
   device::FirmwareOptions fo;
   fo.speed = options.speed;
   s.controller = std::make_unique<device::PrinterController>(s.model, nullptr, fo);
-  s.recorder = std::make_unique<JobRecorder>(RecorderOptions{options.out_dir, options.job_dirs, options.fabric},
+  if (options.state_file) {
+    // Power-on: a job the memory says was open was lost with the power.
+    auto nv = load_printer_memory(*options.state_file);
+    if (!nv) return fail(nv.error());
+    s.controller->restore(*nv);
+  }
+  s.recorder = std::make_unique<JobRecorder>(RecorderOptions{options.out_dir, options.job_dirs, options.fabric,
+                                                             options.state_file.has_value()},
                                              *s.controller, s.usb_counters,
                                              [&s] { return static_cast<double>(s.now_us()) / 1e6; });
   s.controller->set_sink(s.recorder.get());

@@ -20,6 +20,9 @@ struct SimOptions {
   std::optional<std::filesystem::path> printer_model;  ///< model file; built-in tp-sim-1600 otherwise
   double speed = 0;           ///< modelled seconds per wall second, 0 = as fast as data comes
   bool fabric = true;         ///< lay drops and write fabric images
+  /// The printer's non-volatile memory (printsim --state): read at start, written as the job
+  /// goes; with it a printsim killed mid-job comes back as a printer that lost power.
+  std::optional<std::filesystem::path> state_file;
   unsigned reap_hold_ms = 2;  ///< see UsbPrinterDevice
   std::vector<std::string> command;
 };

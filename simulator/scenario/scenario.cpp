@@ -12,10 +12,11 @@ namespace {
 constexpr FaultType kAllFaults[] = {FaultType::kStall,     FaultType::kDropFrame,  FaultType::kCorruptCrc,
                                     FaultType::kUnplug,    FaultType::kInkLow,     FaultType::kCoverOpen,
                                     FaultType::kMediaOut,  FaultType::kMediaJam,   FaultType::kHeadStrike,
-                                    FaultType::kCutterNotReady, FaultType::kEmergencyStop};
+                                    FaultType::kCutterNotReady, FaultType::kEmergencyStop, FaultType::kPowerLoss,
+                                    FaultType::kBufferClear};
 
 bool needs_duration(FaultType t) {
-  return t == FaultType::kUnplug || t == FaultType::kInkLow || t == FaultType::kCoverOpen ||
+  return t == FaultType::kUnplug || t == FaultType::kPowerLoss || t == FaultType::kInkLow || t == FaultType::kCoverOpen ||
          t == FaultType::kMediaOut || t == FaultType::kCutterNotReady;
 }
 
@@ -36,6 +37,8 @@ std::string_view to_string(FaultType type) {
     case FaultType::kHeadStrike: return "head_strike";
     case FaultType::kCutterNotReady: return "cutter_not_ready";
     case FaultType::kEmergencyStop: return "emergency_stop";
+    case FaultType::kPowerLoss: return "power_loss";
+    case FaultType::kBufferClear: return "buffer_clear";
   }
   return "unknown";
 }

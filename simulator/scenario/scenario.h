@@ -26,6 +26,8 @@ enum class FaultType : std::uint8_t {
   kHeadStrike,
   kCutterNotReady,  ///< cutter-ready input drops for duration_ms
   kEmergencyStop,   ///< emergency-stop input asserts (and the printer stops)
+  kPowerLoss,       ///< the printer loses power: job and buffer gone, USB away for duration_ms
+  kBufferClear,     ///< the operator clears the printer: job and buffer gone, link stays
 };
 
 std::string_view to_string(FaultType type);

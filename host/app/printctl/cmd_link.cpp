@@ -27,7 +27,7 @@ struct LinkJobArgs {
   std::string result;
   std::string record;
   bool no_gpio = false;
-  long long reconnect_timeout_ms = 15000;
+  long long reconnect_timeout_ms = PrinterConfig{}.reconnect_timeout.count();
   long long cutter_timeout_ms = 10000;
 };
 

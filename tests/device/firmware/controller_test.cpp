@@ -108,6 +108,39 @@ TEST(Controller, PrintsAJobAndReportsItsCounters) {
   EXPECT_EQ(r.printer.row_mismatches(), 0u);
 }
 
+TEST(Controller, ALostJobIsReportedWithWhatIsOnTheFabricAndSurvivesAPowerCycle) {
+  Rig r;
+  r.begin();
+  for (std::uint32_t i = 0; i < 2; ++i) ASSERT_TRUE(r.link.send_swath(make_swath(i)));
+  auto before = r.status();
+  EXPECT_EQ(before.printed_next, 2u);
+  EXPECT_EQ(before.printed_fabric_um, 1355) << "swath 1 was laid after one feed";
+  r.printer.lose_job("power loss");
+  // The memory a power cycle keeps, restored into a new controller: the same report.
+  Rig after;
+  after.printer.restore(r.printer.nonvolatile());
+  ASSERT_TRUE(after.link.handshake());
+  auto s = after.status();
+  EXPECT_EQ(s.job_id, 0u);
+  EXPECT_EQ(s.last_job_id, 42u);
+  EXPECT_EQ(s.last_outcome, JobOutcome::kLost);
+  EXPECT_EQ(s.last_printed_next, 2u);
+  EXPECT_EQ(s.last_printed_fabric_um, 1355);
+  EXPECT_EQ(s.last_fabric_pos_um, 1355);
+  // The host reopens it at swath 2 with the fabric where it stands; counters go on.
+  ASSERT_TRUE(after.link.send_msg(MessageType::kJobBegin, JobBeginMsg{42, "test", 2, 0, 1355}));
+  ASSERT_TRUE(after.link.send_swath(make_swath(2)));
+  ASSERT_TRUE(after.link.send_msg(MessageType::kJobEnd, JobEndMsg{3, 0}));
+  auto end = after.status();
+  EXPECT_EQ(end.last_outcome, JobOutcome::kCompleted);
+  ASSERT_EQ(after.fabric.reports.size(), 1u);
+  EXPECT_EQ(after.fabric.reports[0].swaths_printed, 3u);
+  EXPECT_EQ(after.fabric.reports[0].first_swath, 0u);
+  EXPECT_EQ(after.fabric.reports[0].feed_travel_um, 2 * 1355);
+  EXPECT_EQ(end.last_fabric_pos_um, 2 * 1355);
+  EXPECT_EQ(after.printer.row_mismatches(), 0u);
+}
+
 TEST(Controller, RefusesASwathSentWithoutCredit) {
   FirmwareOptions slow;
   slow.speed = 1e-6;  // passes take "forever": the buffer fills

@@ -89,7 +89,103 @@ TEST(PrintSession, RunsAJobWithCheckpointsInOrderAndCuesWithinAFeedStep) {
   EXPECT_EQ(res->job.report.cues_fired, 6u);
 }
 
-TEST(PrintSession, ResumesAtTheFirstUnacknowledgedSwath) {
+// Drops per ink of a clean run of `o` on a fresh printer.
+std::vector<std::uint64_t> clean_drops(const SyntheticRunOptions& o) {
+  Rig clean;
+  clean.open();
+  geometry::CancelToken cancel;
+  auto res = run_synthetic_job(*clean.session, o, cancel);
+  EXPECT_TRUE(res) << res.error().message;
+  return res ? res->job.report.drops_per_ink : std::vector<std::uint64_t>{};
+}
+
+TEST(PrintSession, ResumesAJobThePrinterLostFromItsLastPrintedSwath) {
+  Rig r;
+  r.open();
+  bool lost = false;
+  r.printer.set_observer([&](const device::FirmwareEvent& e) {
+    if (e.kind == device::FirmwareEventKind::kSwathPrinting && e.swath == 4 && !lost) {
+      lost = true;  // the operator clears the printer as swath 4 is about to print
+      r.printer.lose_job("buffer cleared");
+    }
+  });
+  std::vector<std::uint32_t> printed;
+  r.session->on_swath_printed([&](std::uint32_t i, std::int64_t) { printed.push_back(i); });
+  geometry::CancelToken cancel;
+  auto res = run_synthetic_job(*r.session, job(9), cancel);
+  ASSERT_TRUE(res) << res.error().message;
+  EXPECT_TRUE(lost);
+  EXPECT_EQ(r.fabric.printed, range(0, 9)) << "nothing lost, nothing printed twice";
+  EXPECT_EQ(res->job.stats.lost_job_resumes, 1u);
+  EXPECT_EQ(res->job.report.swaths_printed, 9u) << "the printer's counters go on across the loss";
+  EXPECT_EQ(res->job.report.drops_per_ink, clean_drops(job(9)));
+  EXPECT_EQ(res->job.report.cues_fired, 6u) << "no cue fired twice or missed";
+  ASSERT_FALSE(printed.empty());
+  EXPECT_EQ(printed.back(), 8u);
+}
+
+// A host that dies after handing in swaths 0..n-1: its session is dropped without aborting.
+void host_dies_after(Rig& r, const SyntheticRunOptions& o, std::uint32_t n) {
+  JobStart start{o.job_id, o.name, 0, 80};
+  ASSERT_TRUE(r.session->begin_job(start));
+  geometry::CancelToken cancel;
+  for (std::uint32_t i = 0; i < n; ++i)
+    ASSERT_TRUE(r.session->send_swath(make_synthetic_swath(o.job, r.session->printer(), i), cancel));
+  for (int i = 0; i < 50 && r.printer.status().printed_next < n; ++i) std::this_thread::sleep_for(milliseconds(2));
+  (void)r.session.release();  // leaked on purpose: a dead process does not abort its job
+}
+
+TEST(PrintSession, ANewSessionResumesAJobLostWithThePowerAfterItsLastPrintedSwath) {
+  auto o = job(9);
+  o.job.cue_every = 0;
+  Rig r;
+  r.open();
+  host_dies_after(r, o, 6);
+  r.printer.lose_job("power loss");
+  ASSERT_EQ(r.printer.status().last_printed_next, 6u);
+  r.open();
+  auto o2 = o;
+  o2.first_swath = 3;  // the host's checkpoint is behind the printer's record
+  geometry::CancelToken cancel;
+  auto res = run_synthetic_job(*r.session, o2, cancel);
+  ASSERT_TRUE(res) << res.error().message;
+  EXPECT_EQ(r.fabric.printed, range(0, 9));
+  EXPECT_EQ(r.session->stats().swaths_skipped, 6u);
+  EXPECT_EQ(res->job.report.swaths_printed, 9u);
+  EXPECT_EQ(res->job.report.drops_per_ink, clean_drops(o));
+}
+
+TEST(PrintSession, ANewSessionReattachesToTheJobThePrinterStillHolds) {
+  auto o = job(9);
+  o.job.cue_every = 0;
+  Rig r;
+  r.open();
+  host_dies_after(r, o, 4);
+  r.open();
+  geometry::CancelToken cancel;
+  auto res = run_synthetic_job(*r.session, o, cancel);
+  ASSERT_TRUE(res) << res.error().message;
+  EXPECT_TRUE(res->job.stats.reattached);
+  EXPECT_EQ(r.fabric.printed, range(0, 9));
+  EXPECT_EQ(res->job.report.drops_per_ink, clean_drops(o));
+}
+
+TEST(PrintSession, AJobThePrinterCompletedIsNotPrintedAgain) {
+  auto o = job(5);
+  o.job.cue_every = 0;
+  Rig r;
+  r.open();
+  geometry::CancelToken cancel;
+  ASSERT_TRUE(run_synthetic_job(*r.session, o, cancel));
+  r.open();
+  auto res = run_synthetic_job(*r.session, o, cancel);
+  ASSERT_TRUE(res) << res.error().message;
+  EXPECT_EQ(r.fabric.printed, range(0, 5));
+  EXPECT_TRUE(r.session->finished_on_printer());
+  EXPECT_EQ(res->job.report.swaths_printed, 5u);
+}
+
+TEST(PrintSession, ACheckpointThePrinterHasNoRecordOfStopsWithAnOperatorMessage) {
   Rig r;
   r.open();
   auto o = job(8);
@@ -97,9 +193,11 @@ TEST(PrintSession, ResumesAtTheFirstUnacknowledgedSwath) {
   o.job.cue_every = 0;
   geometry::CancelToken cancel;
   auto res = run_synthetic_job(*r.session, o, cancel);
-  ASSERT_TRUE(res) << res.error().message;
-  EXPECT_EQ(r.fabric.printed, range(5, 8));
-  EXPECT_EQ(r.session->stats().swaths_skipped, 5u);
+  ASSERT_FALSE(res);
+  EXPECT_EQ(res.error().code, ErrorCode::kPrinter);
+  EXPECT_NE(res.error().message.find("no record"), std::string::npos) << res.error().message;
+  EXPECT_NE(res.error().message.find("print the job again"), std::string::npos) << res.error().message;
+  EXPECT_TRUE(r.fabric.printed.empty());
 }
 
 TEST(PrintSession, WaitsForCreditInsteadOfOverrunningTheBuffer) {

@@ -18,12 +18,16 @@ TEST(Scenario, ParsesEveryFaultKindAndTrigger) {
       {"type": "ink_low", "after_ms": 100, "duration_ms": 900},
       {"type": "media_jam", "at_swath": 9},
       {"type": "cutter_not_ready", "at_swath": 2, "duration_ms": 700},
-      {"type": "emergency_stop", "at_swath": 7}
+      {"type": "emergency_stop", "at_swath": 7},
+      {"type": "power_loss", "at_swath": 4, "duration_ms": 300},
+      {"type": "buffer_clear", "at_swath": 6}
     ],
     "expect": {"outcome": "identical"}
   })", "all.json");
   ASSERT_TRUE(s) << s.error().message;
-  ASSERT_EQ(s->faults.size(), 8u);
+  ASSERT_EQ(s->faults.size(), 10u);
+  EXPECT_EQ(s->faults[8].type, FaultType::kPowerLoss);
+  EXPECT_EQ(s->faults[9].type, FaultType::kBufferClear);
   EXPECT_EQ(s->faults[1].type, FaultType::kDropFrame);
   EXPECT_EQ(s->faults[1].count, 2u);
   EXPECT_EQ(*s->faults[3].at_swath, 5u);
