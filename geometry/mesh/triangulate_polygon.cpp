@@ -10,6 +10,8 @@
 #include <CGAL/lloyd_optimize_mesh_2.h>
 
 #include <cmath>
+#include <cstdint>
+#include <functional>
 #include <map>
 #include <string>
 
@@ -17,12 +19,51 @@ namespace tp::geometry {
 namespace {
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Vb = CGAL::Delaunay_mesh_vertex_base_2<K>;
+
+// Creation number of the next vertex (per thread: a piece is meshed on one thread).
+std::uint64_t next_vertex_serial() {
+  thread_local std::uint64_t next = 0;
+  return next++;
+}
+
+// A mesh vertex that knows when it was created. CGAL's Lloyd optimiser keeps the moving vertices
+// in a std::set<Vertex_handle> and moves them in its order; handles compare by address, so the
+// mesh depended on where the heap put each vertex block (another run, other threads, other load:
+// another mesh). Ordering handles by creation (std::less below) makes the order, and the mesh, a
+// function of the outline and the options alone.
+template <class Gt, class Base = CGAL::Delaunay_mesh_vertex_base_2<Gt>>
+struct SerialVertex : Base {
+  template <class Tds2>
+  struct Rebind_TDS {
+    using Other = SerialVertex<Gt, typename Base::template Rebind_TDS<Tds2>::Other>;
+  };
+  using Base::Base;
+  std::uint64_t serial = next_vertex_serial();
+};
+
+using Vb = SerialVertex<K>;
 using Fb = CGAL::Delaunay_mesh_face_base_2<K>;
 using Tds = CGAL::Triangulation_data_structure_2<Vb, Fb>;
 using Cdt = CGAL::Constrained_Delaunay_triangulation_2<K, Tds>;
 using Criteria = CGAL::Delaunay_mesh_size_criteria_2<Cdt>;
 using Mesher = CGAL::Delaunay_mesher_no_edge_refinement_2<Cdt, Criteria>;
+
+}  // namespace
+}  // namespace tp::geometry
+
+// Vertex handles of the mesher in creation order (see SerialVertex), never by address.
+template <>
+struct std::less<tp::geometry::Cdt::Vertex_handle> {
+  bool operator()(const tp::geometry::Cdt::Vertex_handle& a, const tp::geometry::Cdt::Vertex_handle& b) const {
+    if (a == b) return false;
+    if (a == tp::geometry::Cdt::Vertex_handle() || b == tp::geometry::Cdt::Vertex_handle())
+      return a == tp::geometry::Cdt::Vertex_handle();
+    return a->serial < b->serial;
+  }
+};
+
+namespace tp::geometry {
+namespace {
 
 // True when segments ab and cd cross at a point interior to both.
 bool segments_cross(Vec2 a, Vec2 b, Vec2 c, Vec2 d) {

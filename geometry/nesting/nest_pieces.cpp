@@ -100,7 +100,7 @@ std::vector<double> grain_rotations_deg(Vec2 grain, PieceRotation rule, bool mir
 }
 
 Result<std::vector<Marker>> nest_pieces(const std::vector<NestItem>& items, const NestOptions& options,
-                                        const CancelToken& cancel) {
+                                        const CancelToken& cancel, NestStats* stats) {
   using clock = std::chrono::steady_clock;
   const auto start = clock::now();
   if (auto ok = check(items, options); !ok) return std::unexpected(ok.error());
@@ -113,6 +113,7 @@ Result<std::vector<Marker>> nest_pieces(const std::vector<NestItem>& items, cons
 
   std::vector<Marker> markers;
   double roll_y = 0;
+  std::uint64_t work_used = 0;  // separator iterations spent on earlier markers
   const double tail = options.end_margin_mm;
   for (;;) {
     StripProblem problem;
@@ -145,17 +146,31 @@ Result<std::vector<Marker>> nest_pieces(const std::vector<NestItem>& items, cons
     so.seed = options.seed + markers.size();
     so.threads = options.threads;
     so.workers = options.workers;
-    // Share what is left of the time among the markers still expected.
-    const double spent = std::chrono::duration<double>(clock::now() - start).count();
-    const double left = std::max(0.0, options.time_limit_s - spent);
+    // Share what is left of the budget among the markers still expected. A work-only budget
+    // reads no clock, so the markers do not depend on how fast the machine ran.
     double expected = 1;
     if (options.max_length_mm > 0)
       expected = std::max(1.0, std::ceil(area_left / (options.fabric_width_mm * options.max_length_mm * kPlanningUtilisation)));
-    so.time_limit_s = left / expected;
-    so.work_limit = options.work_limit ? std::max<std::uint64_t>(1, static_cast<std::uint64_t>(options.work_limit / expected)) : 0;
-    so.improve = so.time_limit_s > 0;
+    const bool work_only = options.time_limit_s == 0 && options.work_limit > 0;
+    if (work_only) {
+      const std::uint64_t left = options.work_limit - std::min(options.work_limit, work_used);
+      so.time_limit_s = 0;
+      so.work_limit = std::max<std::uint64_t>(1, static_cast<std::uint64_t>(static_cast<double>(left) / expected));
+      so.improve = true;
+    } else {
+      const double spent = std::chrono::duration<double>(clock::now() - start).count();
+      const double left = std::max(0.0, options.time_limit_s - spent);
+      so.time_limit_s = left / expected;
+      so.work_limit = options.work_limit ? std::max<std::uint64_t>(1, static_cast<std::uint64_t>(options.work_limit / expected)) : 0;
+      so.improve = so.time_limit_s > 0;
+    }
     auto solved = nest_strip(problem, so, cancel);
     if (!solved) return std::unexpected(solved.error().with_context("nesting"));
+    work_used += solved->iterations;
+    if (stats) {
+      stats->iterations.push_back(solved->iterations);
+      stats->seconds.push_back(solved->seconds);
+    }
     if (solved->placements.empty()) {
       const NestItem& it = items[origin[problem_item[solved->unplaced.front()]].nest_item];
       return fail(ErrorCode::kNesting, "nesting: piece '" + it.name + "' does not fit a marker of " +

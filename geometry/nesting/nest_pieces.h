@@ -49,11 +49,19 @@ struct NestOptions {
   /// Zones to avoid, roll frame (x across, y along the roll from the start of the fabric).
   std::vector<Polygon> defects_mm;
   double max_length_mm = 0;         ///< longest marker (0: one marker of any length)
-  double time_limit_s = 5;          ///< search time for all markers together
-  std::uint64_t work_limit = 0;     ///< separator iterations (0: none); see StripOptions
+  double time_limit_s = 5;          ///< search time for all markers together (0 with work_limit: none)
+  /// Separator iterations for all markers together (0: none). With time_limit_s 0 this is the
+  /// only budget and the markers depend on the pieces, the options and the seed alone.
+  std::uint64_t work_limit = 0;
   std::uint64_t seed = 0;
   int threads = 2;
   int workers = 2;
+};
+
+/// What the search spent, per marker (same order as the markers).
+struct NestStats {
+  std::vector<std::uint64_t> iterations;  ///< separator iterations
+  std::vector<double> seconds;            ///< wall-clock time
 };
 
 /// Nests all pieces into one or more markers laid one after the other on the roll (marker k
@@ -65,7 +73,7 @@ struct NestOptions {
 /// width nor the maximum length in any allowed orientation, kCancelled when cancelled before a
 /// first layout exists.
 [[nodiscard]] Result<std::vector<Marker>> nest_pieces(const std::vector<NestItem>& items, const NestOptions& options,
-                                                      const CancelToken& cancel = {});
+                                                      const CancelToken& cancel = {}, NestStats* stats = nullptr);
 
 /// Roll rotations (degrees, in [0, 360)) that lay `grain` along +y under a rule; `mirrored` for
 /// the mirrored piece (x -> -x applied first).

@@ -159,7 +159,7 @@ Polygon place_polygon(const Polygon& shape, const StripPlacement& placement) {
 
 Result<StripSolution> nest_strip(const StripProblem& problem, const StripOptions& options, const CancelToken& cancel) {
   using clock = std::chrono::steady_clock;
-  const auto start = budget_now();
+  const auto start = clock::now();
   if (auto ok = check_options(problem, options); !ok) return std::unexpected(ok.error());
   auto built = build_context(problem, options);
   if (!built) return std::unexpected(built.error().with_context("strip '" + problem.name + "'"));
@@ -175,6 +175,8 @@ Result<StripSolution> nest_strip(const StripProblem& problem, const StripOptions
   Layout layout(&ctx, big_length);
   const auto time_limit = std::chrono::duration_cast<clock::duration>(std::chrono::duration<double>(options.time_limit_s));
   const auto deadline = start + time_limit;
+  // A work budget with no time limit reads no clock: the layout depends on the inputs alone.
+  const bool timed = !(options.time_limit_s == 0 && options.work_limit > 0);
   auto stop = [&] { return cancel.cancelled(); };
   const std::vector<int> unplaced = construct_layout(layout, x_limit, kConstructiveSamples, rng, stop);
   if (cancel.cancelled()) return fail(ErrorCode::kCancelled, "strip '" + problem.name + "': nesting cancelled");
@@ -189,13 +191,6 @@ Result<StripSolution> nest_strip(const StripProblem& problem, const StripOptions
     ThreadTeam team(options.threads);
     Separator sep(options.workers, &team);
     StripSearchConfig cfg;
-    if (getenv("TP_XS")) cfg.explore_shrink = atof(getenv("TP_XS"));  // TUNING-HACK
-    if (getenv("TP_CS0")) cfg.compress_shrink_start = atof(getenv("TP_CS0"));  // TUNING-HACK
-    if (getenv("TP_CS1")) cfg.compress_shrink_end = atof(getenv("TP_CS1"));  // TUNING-HACK
-    if (getenv("TP_XI")) cfg.explore_separator.iter_no_improve_limit = atoi(getenv("TP_XI"));  // TUNING-HACK
-    if (getenv("TP_CI")) cfg.compress_separator.iter_no_improve_limit = atoi(getenv("TP_CI"));  // TUNING-HACK
-    if (getenv("TP_NC")) cfg.explore_separator.samples.container_samples = cfg.compress_separator.samples.container_samples = atoi(getenv("TP_NC"));  // TUNING-HACK
-    if (getenv("TP_NF")) cfg.explore_separator.samples.focused_samples = cfg.compress_separator.samples.focused_samples = atoi(getenv("TP_NF"));  // TUNING-HACK
     const double area_total = [&] {
       double a = 0;
       for (int k = 0; k < layout.size(); ++k)
@@ -206,17 +201,17 @@ Result<StripSolution> nest_strip(const StripProblem& problem, const StripOptions
       if (options.on_improvement) {
         const double len = l.used_original_x_hi();
         options.on_improvement(len, area_total / (problem.width * len),
-                               std::chrono::duration<double>(budget_now() - start).count());
+                               std::chrono::duration<double>(clock::now() - start).count());
       }
     };
     const auto split = start + std::chrono::duration_cast<clock::duration>(time_limit * options.explore_fraction);
     const auto explore_work = static_cast<std::uint64_t>(static_cast<double>(options.work_limit) * options.explore_fraction);
-    Budget b1{start, split, options.work_limit ? std::max<std::uint64_t>(explore_work, 1) : 0, &work, 0, &cancel};
+    Budget b1{start, split, options.work_limit ? std::max<std::uint64_t>(explore_work, 1) : 0, &work, 0, &cancel, timed};
     SearchStats stats;
     explore(layout, sep, cfg, b1, rng, hook, stats);
     Budget b2{split, deadline, options.work_limit ? std::max<std::uint64_t>(options.work_limit - explore_work, 1) : 0,
-              &work, work, &cancel};
-    if (b2.start < budget_now()) b2.start = budget_now();
+              &work, work, &cancel, timed};
+    if (timed && b2.start < clock::now()) b2.start = clock::now();
     compress(layout, sep, cfg, b2, rng, hook, stats);
     sol.explore_feasible = stats.explore_feasible;
     sol.explore_failed = stats.explore_failed;
@@ -235,7 +230,7 @@ Result<StripSolution> nest_strip(const StripProblem& problem, const StripOptions
   sol.length = any_placed ? layout.used_original_x_hi() : 0;
   sol.density = sol.length > 0 ? area / (problem.width * sol.length) : 0;
   sol.iterations = work;
-  sol.seconds = std::chrono::duration<double>(budget_now() - start).count();
+  sol.seconds = std::chrono::duration<double>(clock::now() - start).count();
   return sol;
 }
 

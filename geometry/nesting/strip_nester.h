@@ -50,9 +50,11 @@ struct StripOptions {
   /// Items are only placed with x <= length_limit - (gap/2); copies that do not fit are returned
   /// in StripSolution::unplaced (0 = no limit, every copy is placed).
   double length_limit = 0;
-  double time_limit_s = 10;   ///< wall-clock budget; the best solution so far is returned
-  /// Work budget in separator iterations (0 = none). With only this budget (time limit large),
-  /// the result is a function of the problem, the options and the seed alone.
+  /// Wall-clock budget; the best solution so far is returned. 0 with a work_limit: no time
+  /// limit at all (the clock is never read).
+  double time_limit_s = 10;
+  /// Work budget in separator iterations (0 = none). With only this budget (time_limit_s 0),
+  /// the result is a function of the problem, the options and the seed alone, whatever the load.
   std::uint64_t work_limit = 0;
   std::uint64_t seed = 0;
   int threads = 2;            ///< OS threads running the workers (does not change the result)

@@ -234,6 +234,10 @@ class Daemon {
       opt.out_dir = rec.out_dir;
       opt.printer_override = cfg_.printer_override;
       opt.resume_after_swath = rec.last_acked_swath;
+      // The job's plan lives in its state: a resume or a restart prints the garment and marker
+      // made the first time (docs/plan-storage.md).
+      opt.plan_dir = cfg_.state_dir / "plans" / std::to_string(rec.id);
+      (void)store.set_plan_dir(rec.id, opt.plan_dir.string());
       opt.job_id = rec.id;
       opt.on_stage = [&](Stage s, StageState st, double secs) {
         (void)store.set_stage(rec.id, std::string(to_string(s)), std::string(to_string(st)), secs);

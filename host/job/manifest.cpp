@@ -16,6 +16,10 @@ using internal::Problems;
 namespace {
 
 constexpr double kMaxLengthMm = 100000.0;  // 100 m: longer than any marker or garment
+// Nesting budgets in separator iterations: the default of `marker.reproducible`, and the most a
+// job may ask for.
+constexpr int kDefaultNestIterations = 20000;
+constexpr int kMaxNestIterations = 10'000'000;
 
 // Resolves an asset field into `out` (reporting unsafe or missing files as problems).
 void read_asset(FieldReader& r, const std::string& key, bool required, const JobPackage* pkg,
@@ -157,14 +161,27 @@ void read_finishing(FieldReader f, FinishingSpec& s) {
 }
 
 void read_marker(FieldReader m, MarkerSpec& s) {
-  m.reject_unknown({"fabric_width", "gap", "edge_margin", "rotations", "mirror", "time_limit_s", "seed",
-                    "max_length", "defects"});
+  m.reject_unknown({"fabric_width", "gap", "edge_margin", "rotations", "mirror", "time_limit_s", "budget",
+                    "reproducible", "seed", "max_length", "defects"});
   if (auto v = m.length_mm("fabric_width", true, 100, 10000)) s.fabric_width_mm = *v;
   if (auto v = m.length_mm("gap", false, 0, 100)) s.gap_mm = *v;
   if (auto v = m.length_mm("edge_margin", false, 0, 500)) s.edge_margin_mm = *v;
   if (auto v = m.choice("rotations", false, {"grain", "90", "free", "fixed"})) s.rotations = *v;
   if (auto v = m.boolean("mirror", false)) s.mirror = *v;
   if (auto v = m.number("time_limit_s", false, 0, 3600)) s.time_limit_s = *v;
+  if (auto b = m.object("budget", false)) {
+    b->reject_unknown({"seconds", "iterations"});
+    if (b->has("seconds") == b->has("iterations"))
+      m.problems().add(m.pointer_of("budget"), "give either \"seconds\" or \"iterations\"");
+    if (auto v = b->number("seconds", false, 0, 3600)) s.time_limit_s = *v;
+    if (auto v = b->integer("iterations", false, 1, kMaxNestIterations)) s.iterations = *v;
+  }
+  if (auto v = m.boolean("reproducible", false); v && *v && s.iterations == 0) {
+    if (m.has("budget") || m.has("time_limit_s"))
+      m.problems().add(m.pointer_of("reproducible"), "a reproducible marker has an iteration budget, not seconds: "
+                                                     "give budget {\"iterations\": N} or no time limit");
+    s.iterations = kDefaultNestIterations;
+  }
   if (auto v = m.integer("seed", false, 0, 1 << 30)) s.seed = *v;
   if (auto v = m.length_mm("max_length", false, 100, kMaxLengthMm)) s.max_length_mm = *v;
   for (auto& d : m.objects("defects", false)) {

@@ -37,6 +37,7 @@ std::string_view to_string(StageState state) {
     case StageState::kFailed: return "failed";
     case StageState::kCancelled: return "cancelled";
     case StageState::kSkipped: return "skipped";
+    case StageState::kReused: return "reused";
   }
   return "unknown";
 }
@@ -76,9 +77,17 @@ Status run_job(const Job& job, const RunOptions& options, const geometry::Cancel
       {Stage::kDesign, internal::stage_design}, {Stage::kMarker, internal::stage_marker},
       {Stage::kPrint, internal::stage_print},   {Stage::kOutputs, internal::stage_outputs}};
   Status result = {};
+  if (!options.plan_dir.empty()) {
+    auto plan = internal::PlanStore::open(options.plan_dir);
+    if (plan) ps.plan = std::move(*plan);
+    else result = fail(plan.error().with_context("plan"));
+  }
   for (const auto& [stage, fn] : stages) {
-    result = tracker.run(stage, [&] { return fn(ps); });
     if (!result) break;
+    result = tracker.run(stage, [&] {
+      ps.stage_reused = false;
+      return fn(ps);
+    }, &ps.stage_reused);
   }
 
   report["finished"] = utc_now();

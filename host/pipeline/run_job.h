@@ -20,7 +20,8 @@ inline constexpr Stage kAllStages[] = {Stage::kIntake, Stage::kPattern, Stage::k
                                        Stage::kDesign, Stage::kMarker,  Stage::kPrint, Stage::kOutputs};
 std::string_view to_string(Stage stage);
 
-enum class StageState { kFresh, kRunning, kDone, kFailed, kCancelled, kSkipped };
+/// kReused: the stage's result was loaded from the job's stored plan (its inputs are unchanged).
+enum class StageState { kFresh, kRunning, kDone, kFailed, kCancelled, kSkipped, kReused };
 std::string_view to_string(StageState state);
 
 /// How to run a job (where outputs go, which printer, where to resume).
@@ -30,6 +31,9 @@ struct RunOptions {
   std::string printer_override;
   /// Swaths with index <= this were acknowledged by the printer in an earlier attempt.
   std::int64_t resume_after_swath = -1;
+  /// The job's plan directory (garment, pieces, marker, swath plan; docs/plan-storage.md). Empty:
+  /// nothing is stored and every stage runs. A step whose inputs are unchanged is loaded from it.
+  std::filesystem::path plan_dir;
   /// Non-zero id for logs and the printer's job-begin message (printers use 0 for "no job").
   std::int64_t job_id = 0;
   std::function<void(Stage, StageState, double seconds)> on_stage;

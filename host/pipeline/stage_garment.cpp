@@ -8,6 +8,7 @@
 #include "geometry/samples/garments.h"
 #include "host/pipeline/garment_files.h"
 #include "host/pipeline/internal/pipeline_state.h"
+#include "host/pipeline/internal/plan_steps.h"
 
 namespace tp::host::internal {
 
@@ -42,7 +43,11 @@ Status stage_garment(PipelineState& ps) {
   if (!body) return fail(body.error());
   ps.body = *body;
 
-  if (!ps.garment && ps.body) {
+  if (ps.plan_garment) {
+    // The job's stored plan: never sewn twice (a resume or a reprint prints this garment).
+    if (auto st = load_plan_garment(ps); !st) return st;
+    ps.stage_reused = true;
+  } else if (!ps.garment && ps.body) {
     geometry::SewOptions opt;
     opt.target_edge_mm = ps.job.garment.mesh_edge_mm;
     geometry::SewStats stats;
@@ -60,6 +65,8 @@ Status stage_garment(PipelineState& ps) {
     ps.garment = std::move(*g);
     ps.garment_is_3d = false;
   }
+  if (!ps.stage_reused)
+    if (auto st = save_plan_garment(ps); !st) return st;
 
   geometry::DistortionReport d = geometry::measure_distortion(ps.pattern, *ps.garment, ps.body.get());
   ps.report["garment"] = {{"mode", ps.garment_is_3d ? "3d" : "flat"},

@@ -3,6 +3,7 @@
 #include "geometry/nesting/nest_pieces.h"
 #include "host/pipeline/internal/output_files.h"
 #include "host/pipeline/internal/pipeline_state.h"
+#include "host/pipeline/internal/plan_steps.h"
 #include "rip/image/image_io.h"
 #include "rip/render/marker_preview.h"
 
@@ -45,21 +46,34 @@ Status stage_marker(PipelineState& ps) {
     opt.defects_mm.push_back({{d.x_mm, d.y_mm}, {d.x_mm + d.width_mm, d.y_mm},
                               {d.x_mm + d.width_mm, d.y_mm + d.length_mm}, {d.x_mm, d.y_mm + d.length_mm}});
   opt.max_length_mm = m.max_length_mm.value_or(0);
-  opt.time_limit_s = m.time_limit_s;
+  // A reproducible budget counts separator iterations and reads no clock.
+  opt.time_limit_s = m.iterations > 0 ? 0 : m.time_limit_s;
+  opt.work_limit = static_cast<std::uint64_t>(m.iterations);
   opt.seed = static_cast<std::uint64_t>(m.seed);
-  auto markers = geometry::nest_pieces(items, opt, ps.cancel);
-  if (!markers) {
-    auto code = markers.error().code == geometry::ErrorCode::kCancelled ? ErrorCode::kCancelled : ErrorCode::kPipeline;
-    return fail(code, markers.error().message);
+  geometry::NestStats nest_stats;
+  auto stored = find_plan_markers(ps, items, opt);
+  if (!stored) return fail(stored.error());
+  if (*stored) {
+    // The markers the job's plan recorded: never nested twice (the fabric printed follows them).
+    ps.markers = std::move(**stored);
+    ps.stage_reused = true;
+  } else {
+    auto markers = geometry::nest_pieces(items, opt, ps.cancel, &nest_stats);
+    if (!markers) {
+      auto code = markers.error().code == geometry::ErrorCode::kCancelled ? ErrorCode::kCancelled : ErrorCode::kPipeline;
+      return fail(code, markers.error().message);
+    }
+    ps.markers = std::move(*markers);
+    if (auto st = save_plan_markers(ps, items, opt, ps.markers, nest_stats); !st) return st;
   }
-  ps.markers = std::move(*markers);
 
   // One roll: each marker starts where the previous one ends.
   ps.roll = {};
   ps.roll.width_mm = m.fabric_width_mm;
   ps.marker_start_mm.clear();
   nlohmann::json list = nlohmann::json::array();
-  for (const auto& mk : ps.markers) {
+  for (size_t k = 0; k < ps.markers.size(); ++k) {
+    const geometry::Marker& mk = ps.markers[k];
     ps.marker_start_mm.push_back(ps.roll.length_mm);
     for (auto p : mk.placements) {
       p.offset_mm.y += ps.roll.length_mm;
@@ -67,12 +81,16 @@ Status stage_marker(PipelineState& ps) {
     }
     list.push_back({{"start_mm", ps.roll.length_mm}, {"length_mm", mk.length_mm},
                     {"pieces", mk.placements.size()}, {"utilisation", mk.utilisation}});
+    if (k < nest_stats.iterations.size()) list.back()["search_iterations"] = nest_stats.iterations[k];
     ps.roll.length_mm += mk.length_mm;
   }
   ps.roll.utilisation = ps.roll.length_mm > 0 ? piece_area_mm2 / (ps.roll.width_mm * ps.roll.length_mm) : 0;
   ps.report["marker"] = {{"fabric_width_mm", ps.roll.width_mm},
                          {"length_mm", ps.roll.length_mm},
                          {"utilisation", ps.roll.utilisation},
+                         {"budget", m.iterations > 0 ? nlohmann::json{{"iterations", m.iterations}}
+                                                     : nlohmann::json{{"seconds", m.time_limit_s}}},
+                         {"source", ps.stage_reused ? "plan" : "nested"},
                          {"markers", list}};
   ps.report["fabric_length_mm"] = ps.roll.length_mm;
 

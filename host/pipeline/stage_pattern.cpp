@@ -8,6 +8,7 @@
 #include "geometry/samples/garments.h"
 #include "geometry/samples/sizes.h"
 #include "host/pipeline/internal/pipeline_state.h"
+#include "host/pipeline/internal/plan_steps.h"
 
 namespace tp::host::internal {
 
@@ -73,6 +74,14 @@ Status stage_pattern(PipelineState& ps) {
 }
 
 Status stage_mesh(PipelineState& ps) {
+  // A garment stored in the job's plan for these inputs needs no mesh: its charts are the mesh.
+  auto stored = find_plan_garment(ps);
+  if (!stored) return fail(stored.error());
+  if (*stored) {
+    ps.report["mesh"] = {{"source", "plan"}};
+    ps.stage_reused = true;
+    return {};
+  }
   if (ps.garment) {
     ps.report["mesh"] = {{"source", "garment_mesh"}};
     return {};

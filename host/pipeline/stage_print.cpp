@@ -6,6 +6,7 @@
 
 #include "host/pipeline/printer_model.h"
 #include "host/pipeline/internal/pipeline_state.h"
+#include "host/pipeline/internal/plan_steps.h"
 #include "host/session/print_session.h"
 #include "host/session/sim_reexec.h"
 #include "rip/job/rip_job.h"
@@ -102,6 +103,8 @@ Status stage_print(PipelineState& ps) {
   auto model = job_printer_model(ps.job);
   if (!model) return fail(model.error());
   rip::RipSettings settings = rip_settings(ps);
+  auto swath_plan = SwathPlan::open(ps, *model, settings.first_swath_index);
+  if (!swath_plan) return fail(swath_plan.error());
 
   // Without a printer ("none") the RIP still runs in full; its swaths are counted and dropped.
   std::unique_ptr<PrintSession> session;
@@ -135,6 +138,8 @@ Status stage_print(PipelineState& ps) {
 
   // Swaths go to the printer as the RIP completes them.
   auto sink = [&](device::Swath&& swath) -> rip::Status {
+    // Nothing reaches the printer that the job's stored swath plan does not hold.
+    if (auto st = swath_plan->check(swath); !st) return rip::fail(rip::ErrorCode::kSwath, st.error().message);
     if (!session) return {};
     if (auto st = session->send_swath(swath, ps.cancel); !st)
       return rip::fail(st.error().code == ErrorCode::kCancelled ? rip::ErrorCode::kCancelled : rip::ErrorCode::kSwath,
@@ -148,6 +153,7 @@ Status stage_print(PipelineState& ps) {
     return fail(cancelled ? ErrorCode::kCancelled : ErrorCode::kPipeline, stats.error().message);
   }
   ps.report["rip"] = rip_json(*stats);
+  if (auto st = swath_plan->finish(stats->swaths); !st) return st;
 
   nlohmann::json print = {{"printer", printer}, {"swaths_total", stats->swaths}, {"swaths_sent", stats->swaths_sent},
                           {"swaths_acked", session ? acked : 0u}};

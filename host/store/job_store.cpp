@@ -64,6 +64,10 @@ CREATE TABLE IF NOT EXISTS job_stages (
   seconds REAL NOT NULL DEFAULT 0,
   PRIMARY KEY (job_id, stage)
 );
+CREATE TABLE IF NOT EXISTS job_plans (
+  job_id INTEGER PRIMARY KEY REFERENCES jobs(id) ON DELETE CASCADE,
+  plan_dir TEXT NOT NULL
+);
 PRAGMA user_version = 1;
 )sql";
 
@@ -250,6 +254,24 @@ Status JobStore::set_checkpoint(std::int64_t id, std::int64_t last_acked_swath) 
   s.bind(1, last_acked_swath); s.bind(2, now_ms()); s.bind(3, id);
   if (s.step() != SQLITE_DONE) return fail(ErrorCode::kStore, "job " + std::to_string(id) + ": " + s.error());
   return {};
+}
+
+Status JobStore::set_plan_dir(std::int64_t id, const std::string& plan_dir) {
+  Stmt s(db_, "INSERT INTO job_plans (job_id, plan_dir) VALUES (?, ?) ON CONFLICT(job_id) DO UPDATE SET plan_dir=excluded.plan_dir");
+  if (!s.ok()) return fail(ErrorCode::kStore, "set_plan_dir: " + s.error());
+  s.bind(1, id); s.bind(2, plan_dir);
+  if (s.step() != SQLITE_DONE) return fail(ErrorCode::kStore, "job " + std::to_string(id) + ": " + s.error());
+  return {};
+}
+
+Result<std::optional<std::string>> JobStore::plan_dir(std::int64_t id) {
+  Stmt s(db_, "SELECT plan_dir FROM job_plans WHERE job_id=?");
+  if (!s.ok()) return fail(ErrorCode::kStore, "plan_dir: " + s.error());
+  s.bind(1, id);
+  const int rc = s.step();
+  if (rc == SQLITE_DONE) return std::optional<std::string>{};
+  if (rc != SQLITE_ROW) return fail(ErrorCode::kStore, "job " + std::to_string(id) + ": " + s.error());
+  return std::optional<std::string>(s.text(0));
 }
 
 Result<JobState> JobStore::request_cancel(std::int64_t id) {

@@ -78,6 +78,10 @@ class JobStore {
                                  double seconds);
   [[nodiscard]] Result<std::vector<StageRecord>> stages(std::int64_t id);
   [[nodiscard]] Status set_checkpoint(std::int64_t id, std::int64_t last_acked_swath);
+  /// The job's plan directory (garment, marker, swath plan; docs/plan-storage.md).
+  [[nodiscard]] Status set_plan_dir(std::int64_t id, const std::string& plan_dir);
+  /// nullopt when none was recorded.
+  [[nodiscard]] Result<std::optional<std::string>> plan_dir(std::int64_t id);
   /// Queued jobs become cancelled at once; a running job gets cancel_requested for its worker.
   /// Fails with kJob if the job does not exist or has already ended.
   [[nodiscard]] Result<JobState> request_cancel(std::int64_t id);

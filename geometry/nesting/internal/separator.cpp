@@ -70,8 +70,11 @@ void ThreadTeam::run(int n_tasks, const std::function<void(int)>& task) {
 
 double Budget::progress() const {
   using namespace std::chrono;
-  const double total = duration<double>(deadline - start).count();
-  double p = total > 0 ? duration<double>(budget_now() - start).count() / total : 1.0;
+  double p = 0;
+  if (timed) {
+    const double total = duration<double>(deadline - start).count();
+    p = total > 0 ? duration<double>(steady_clock::now() - start).count() / total : 1.0;
+  }
   if (work_limit) p = std::max(p, static_cast<double>(*work_done - work_start) / static_cast<double>(work_limit));
   return std::clamp(p, 0.0, 1.0);
 }

@@ -4,8 +4,6 @@
 #pragma once
 
 #include <chrono>
-#include <cstdlib>
-#include <ctime>
 #include <condition_variable>
 #include <cstdint>
 #include <functional>
@@ -42,26 +40,18 @@ class ThreadTeam {
   bool stop_ = false;
 };
 
-inline std::chrono::steady_clock::time_point budget_now() {  // TUNING-HACK
-  static const bool cpu = getenv("TP_CPU") != nullptr;
-  if (cpu) {
-    timespec ts;
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
-    return std::chrono::steady_clock::time_point(std::chrono::nanoseconds(static_cast<long long>(ts.tv_sec) * 1000000000LL + ts.tv_nsec));
-  }
-  return std::chrono::steady_clock::now();
-}
-
-/// Time, work and cancellation limits of a phase.
+/// Time, work and cancellation limits of a phase. Without `timed`, no clock is read: the phase
+/// ends on its work limit (or cancellation) alone, so its result does not depend on CPU load.
 struct Budget {
   std::chrono::steady_clock::time_point start, deadline;
   std::uint64_t work_limit = 0;  ///< separator iterations; 0 = unlimited
   std::uint64_t* work_done = nullptr;
   std::uint64_t work_start = 0;
   const CancelToken* cancel = nullptr;
+  bool timed = true;             ///< false: `start` and `deadline` are ignored
 
   bool out_of_time() const {
-    return (cancel && cancel->cancelled()) || budget_now() >= deadline;
+    return (cancel && cancel->cancelled()) || (timed && std::chrono::steady_clock::now() >= deadline);
   }
   bool exhausted() const { return out_of_time() || (work_limit && *work_done - work_start >= work_limit); }
   /// Fraction of the phase used, the larger of time and work.

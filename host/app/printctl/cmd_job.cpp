@@ -82,7 +82,7 @@ void register_job_commands(CLI::App& app) {
     if (auto st = write_file_atomic(model_out, text); !st) die(st.error(), 1);
   });
 
-  static std::string run_path, run_out, run_printer;
+  static std::string run_path, run_out, run_printer, run_plan;
   static long long resume_after = -1;
   CLI::App* run = app.add_subcommand("run", "Run a job end to end and print it");
   run->add_option("job", run_path, "Job folder or .zip")->required();
@@ -91,6 +91,9 @@ void register_job_commands(CLI::App& app) {
       ->check(CLI::IsMember({"sim", "usb", "none"}));
   run->add_option("--resume-after-swath", resume_after, "Swaths up to this index were already printed");
   add_limit_option(run);
+  run->add_option("--plan-dir", run_plan,
+                  "The job's plan directory: garment, marker and swath plan are stored there when made and "
+                  "loaded while their inputs are unchanged (docs/plan-storage.md)");
   run->callback([] {
     fs::path out = fs::absolute(run_out);
     // A zip job is unpacked inside the output folder, afresh on every run.
@@ -118,6 +121,7 @@ void register_job_commands(CLI::App& app) {
     opt.out_dir = out;
     opt.printer_override = run_printer;
     opt.resume_after_swath = resume_after;
+    if (!run_plan.empty()) opt.plan_dir = fs::absolute(run_plan);
     // Printers report "no job" as id 0, so a command-line run takes a non-zero id of its own.
     opt.job_id = static_cast<std::int64_t>(std::time(nullptr));
     geometry::CancelToken cancel;

@@ -16,6 +16,7 @@
 #include "geometry/nesting/marker.h"
 #include "geometry/pattern/pattern.h"
 #include "host/job/job.h"
+#include "host/pipeline/internal/plan_store.h"
 #include "host/pipeline/run_job.h"
 
 namespace tp::host::internal {
@@ -41,6 +42,14 @@ struct PipelineState {
   std::vector<geometry::Marker> markers;          ///< as nested, each in its own frame
   geometry::Marker roll;                          ///< all markers one after another on the roll
   std::vector<double> marker_start_mm;            ///< where each marker starts on the roll
+
+  // The job's stored plan (RunOptions::plan_dir), and what each plan step was made from.
+  std::optional<PlanStore> plan;
+  std::string garment_key;                        ///< inputs hash of pattern, mesh and garment
+  std::optional<std::filesystem::path> plan_garment;  ///< stored garment valid for garment_key
+  std::string garment_digest;                     ///< hash of the garment as used (plan file text)
+  std::string marker_digest;                      ///< hash of the markers as used (plan file text)
+  bool stage_reused = false;                      ///< set by a stage that loaded its result from the plan
 };
 
 // One function per stage (stage_<name>.cpp), each filling PipelineState and the report.

@@ -19,14 +19,15 @@ class StageTracker {
   }
 
   /// Runs `body` (returning Status) as stage `s`; a cancelled token fails the stage as cancelled.
+  /// A stage that succeeds with `*reused` set is recorded as reused (loaded from the plan).
   template <class Body>
-  Status run(Stage s, Body&& body) {
+  Status run(Stage s, Body&& body, const bool* reused = nullptr) {
     if (cancel_.cancelled()) return finish(s, StageState::kCancelled, 0, fail(ErrorCode::kCancelled, "job cancelled"));
     set(s, StageState::kRunning, 0);
     auto t0 = std::chrono::steady_clock::now();
     Status st = body();
     double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    if (st) return finish(s, StageState::kDone, secs, st);
+    if (st) return finish(s, reused && *reused ? StageState::kReused : StageState::kDone, secs, st);
     bool cancelled = st.error().code == ErrorCode::kCancelled || cancel_.cancelled();
     Error e = st.error();
     if (cancelled) e.code = ErrorCode::kCancelled;
