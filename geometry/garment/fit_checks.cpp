@@ -24,9 +24,10 @@ struct SoupTriangle {
   int piece = 0;
 };
 
-std::vector<SoupTriangle> garment_triangles(const Garment& g) {
+std::vector<SoupTriangle> garment_triangles(const Garment& g, const std::vector<bool>* skip) {
   std::vector<SoupTriangle> out;
   for (size_t p = 0; p < g.pieces.size(); ++p) {
+    if (skip && p < skip->size() && (*skip)[p]) continue;
     const GarmentPiece& gp = g.pieces[p];
     for (const auto& t : gp.mesh.triangles) {
       std::array<int, 3> v{gp.vertex_3d[t[0]], gp.vertex_3d[t[1]], gp.vertex_3d[t[2]]};
@@ -69,8 +70,8 @@ int worst_of(const std::vector<double>& v) {
 
 }  // namespace
 
-int count_self_intersections(const Garment& g, std::vector<int>* per_piece) {
-  const std::vector<SoupTriangle> tris = garment_triangles(g);
+int count_self_intersections(const Garment& g, std::vector<int>* per_piece, const std::vector<bool>* skip) {
+  const std::vector<SoupTriangle> tris = garment_triangles(g, skip);
   if (per_piece) per_piece->assign(g.pieces.size(), 0);
   using Box = CGAL::Box_intersection_d::Box_with_handle_d<double, 3, const SoupTriangle*>;
   std::vector<Box> boxes;
@@ -112,6 +113,13 @@ FitReport check_fit(const Pattern& pattern, const Garment& g, const BodySdf* bod
   for (const Vec3& v : g.vertices_mm) garment_box.add(v);
   const Box3 frame = body ? body->box() : garment_box;
   const size_t np = pattern.pieces.size();
+  // Pieces sewn to no other piece are printed flat: listed, and left out of the checks.
+  std::vector<bool> unsewn(np, true);
+  for (const Stitch& st : pattern.stitches)
+    if (st.a.piece != st.b.piece) unsewn[static_cast<size_t>(st.a.piece)] = unsewn[static_cast<size_t>(st.b.piece)] = false;
+  if (pattern.stitches.empty()) unsewn.assign(np, false);
+  for (size_t p = 0; p < np; ++p)
+    if (unsewn[p]) r.unsewn_pieces.push_back(static_cast<int>(p));
 
   // Stitch gaps: every sewn vertex pair, before merging.
   std::vector<double> all_gaps;
@@ -140,8 +148,8 @@ FitReport check_fit(const Pattern& pattern, const Garment& g, const BodySdf* bod
 
   // Self-intersections, with the piece most involved.
   std::vector<int> si_piece;
-  r.self_intersections = count_self_intersections(g, &si_piece);
-  const std::vector<SoupTriangle> tris = garment_triangles(g);
+  r.self_intersections = count_self_intersections(g, &si_piece, &unsewn);
+  const std::vector<SoupTriangle> tris = garment_triangles(g, &unsewn);
   r.triangles = static_cast<int>(tris.size());
   auto piece_centre = [&](int p) {
     Vec3 c{};
@@ -169,8 +177,15 @@ FitReport check_fit(const Pattern& pattern, const Garment& g, const BodySdf* bod
   std::vector<double> dist(g.vertices_mm.size());
   std::vector<double> inside_piece(np, 0);
   std::vector<char> inside(g.vertices_mm.size(), 0);
+  // Vertices of sewn pieces only (a seam vertex belongs to every piece it joins).
+  std::vector<char> sewn_vertex(g.vertices_mm.size(), 0);
+  for (size_t p = 0; p < np && p < g.pieces.size(); ++p)
+    if (!unsewn[p])
+      for (int v : g.pieces[p].vertex_3d) sewn_vertex[static_cast<size_t>(v)] = 1;
+  dist.clear();
   for (size_t i = 0; i < g.vertices_mm.size(); ++i) {
-    dist[i] = surface.nearest(g.vertices_mm[i]).distance_mm;
+    if (!sewn_vertex[i]) continue;
+    dist.push_back(surface.nearest(g.vertices_mm[i]).distance_mm);
     inside[i] = body->query(g.vertices_mm[i]).distance_mm < 0;
     r.inside_body += inside[i];
   }

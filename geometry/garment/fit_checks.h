@@ -32,6 +32,9 @@ struct FitReport {
   double body_distance_p50_mm = 0;   ///< unsigned distance of the vertices to the body surface
   double body_distance_p95_mm = 0;
   double off_body = 0;               ///< area fraction farther than off_body_distance_mm from the body
+  /// Pieces no stitch joins to another piece (a pocket bag, a label): printed flat, left out of
+  /// the body and self-intersection checks.
+  std::vector<int> unsewn_pieces;
   bool pass = true;
   /// One per failed check: "stitch_gap", "self_intersections", "inside_body" or "off_body"; a
   /// sentence naming the figure, the limit and the worst stitch or piece; the preview to look at.
@@ -46,12 +49,15 @@ struct FitReport {
 /// Intersecting triangle pairs of the garment that share no vertex (CGAL box intersection for
 /// candidates, exact predicates for the test); degenerate triangles are skipped. Optionally the
 /// count per piece (triangles of that piece in such a pair), in pattern order.
-int count_self_intersections(const Garment& garment, std::vector<int>* per_piece = nullptr);
+/// Pieces flagged in `skip` (by index) are left out.
+int count_self_intersections(const Garment& garment, std::vector<int>* per_piece = nullptr,
+                             const std::vector<bool>* skip = nullptr);
 
 /// Runs every check on the final `garment` of `pattern`. `stitch_gaps_mm` holds, per stitch,
 /// the distances between its two sides' vertex pairs at the end of sewing (SewStats; empty
 /// for a garment not sewn here: then the gap check is skipped). Body checks need `body`;
-/// without it only gaps and self-intersections are checked.
+/// without it only gaps and self-intersections are checked. Pieces no stitch joins to another
+/// piece are listed in unsewn_pieces and left out.
 FitReport check_fit(const Pattern& pattern, const Garment& garment, const BodySdf* body,
                     const std::vector<std::vector<double>>& stitch_gaps_mm, const FitLimits& limits = {});
 

@@ -14,12 +14,15 @@ geometry::FitLimits fit_limits(const GarmentChecksSpec& spec) {
   return l;
 }
 
-nlohmann::json checks_json(const geometry::FitReport& r, const geometry::FitLimits& limits,
+nlohmann::json checks_json(const geometry::Pattern& pattern, const geometry::FitReport& r, const geometry::FitLimits& limits,
                            const std::string& preview_prefix) {
   nlohmann::json failures = nlohmann::json::array();
   for (const auto& f : r.failures)
     failures.push_back({{"check", f.check}, {"message", f.message}, {"preview", preview_prefix + f.view + ".png"}});
+  nlohmann::json unsewn = nlohmann::json::array();
+  for (int p : r.unsewn_pieces) unsewn.push_back(pattern.pieces[static_cast<size_t>(p)].name);
   return {{"pass", r.pass},
+          {"unsewn_pieces", unsewn},
           {"stitches", r.stitches},
           {"stitch_gap_max_mm", r.stitch_gap_max_mm},
           {"stitch_gap_p95_mm", r.stitch_gap_p95_mm},

@@ -16,8 +16,9 @@ namespace tp::host {
 geometry::FitLimits fit_limits(const GarmentChecksSpec& spec);
 
 /// report.json `garment.checks`: the figures, the limits, "pass" and the failures (each with
-/// the preview file `<preview_prefix><view>.png` to look at).
-nlohmann::json checks_json(const geometry::FitReport& r, const geometry::FitLimits& limits,
+/// the preview file `<preview_prefix><view>.png` to look at), and the pieces printed flat
+/// because no stitch joins them to the garment (`unsewn_pieces`).
+nlohmann::json checks_json(const geometry::Pattern& pattern, const geometry::FitReport& r, const geometry::FitLimits& limits,
                            const std::string& preview_prefix);
 
 /// report.json `garment.stitches`: per stitch its two sides (piece and edge names, span in mm),

@@ -101,7 +101,7 @@ Status stage_garment(PipelineState& ps) {
   // Fit checks on the final garment: a garment not sewn, tangled or off the body fails here.
   const geometry::FitLimits limits = fit_limits(ps.job.garment.checks);
   geometry::FitReport fit = geometry::check_fit(ps.pattern, *ps.garment, ps.body.get(), stats.stitch_gap_mm, limits);
-  ps.report["garment"]["checks"] = checks_json(fit, limits, "garment-");
+  ps.report["garment"]["checks"] = checks_json(ps.pattern, fit, limits, "garment-");
   if (!fit.pass) return fail(ErrorCode::kPipeline, checks_failure_message(fit, "garment-"));
   return {};
 }
