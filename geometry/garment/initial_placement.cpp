@@ -1,6 +1,8 @@
 // geometry/garment/initial_placement.cpp: pieces placed and rolled around the body before sewing.
 #include "geometry/garment/initial_placement.h"
 
+#include "geometry/garment/role_placement.h"
+
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -13,8 +15,6 @@ constexpr double kPi = 3.14159265358979323846;
 // Pieces nearer than this to their roll axis, or rolled further round than this, stay flat.
 constexpr double kMinRollRadiusMm = 30;
 constexpr double kMaxRollAngle = 0.8 * kPi;
-// Gap between the body's widest point and pieces laid out without a placement.
-constexpr double kFallbackGapMm = 40;
 
 Vec3 rotate(const Placement3d& pl, Vec2 p) {
   const auto& r = pl.rotation;
@@ -35,8 +35,6 @@ void roll(std::vector<Vec3>& pts, Vec3 foot, Vec3 d, Vec3 inward, double r) {
   }
 }
 
-bool contains(const std::string& s, const char* word) { return s.find(word) != std::string::npos; }
-
 // A piece sewn to itself between two edges far apart across its width is a tube.
 bool is_tube(const Pattern& pattern, int piece, double width_mm) {
   for (const Stitch& st : pattern.stitches) {
@@ -55,62 +53,39 @@ bool is_tube(const Pattern& pattern, int piece, double width_mm) {
 std::vector<std::vector<Vec3>> initial_placement(const Pattern& pattern, const PatternMesh& meshes, const BodySdf& body) {
   const Box3& bb = body.box();
   const Vec3 centre{(bb.min.x + bb.max.x) / 2, 0, (bb.min.z + bb.max.z) / 2};
-  const double height = bb.max.y - bb.min.y;
   std::vector<std::vector<Vec3>> out(pattern.pieces.size());
-
-  // Fallback layout: pieces without a placement share angular slots around the body.
-  std::map<double, double> slot_used_mm;
-  const double fallback_r = std::max(bb.max.z - centre.z, centre.z - bb.min.z) + kFallbackGapMm;
+  // Pieces without a placement get one from their role and the body's landmarks.
+  const std::vector<Placement3d> placements = role_placements(pattern, body);
 
   for (size_t pi = 0; pi < pattern.pieces.size(); ++pi) {
-    const Piece& piece = pattern.pieces[pi];
     const PieceMesh& m = meshes.pieces[pi];
     Box2 pb;
     for (Vec2 v : m.vertices_mm) pb.add(v);
     const Vec2 pc{(pb.min.x + pb.max.x) / 2, (pb.min.y + pb.max.y) / 2};
     std::vector<Vec3>& pts = out[pi];
-
-    if (piece.placement) {
-      const Placement3d& pl = *piece.placement;
-      for (Vec2 v : m.vertices_mm) pts.push_back(rotate(pl, v));
-      const Vec3 origin = rotate(pl, {0, 0});
-      Vec3 d = rotate(pl, {0, 1}) - origin, n = cross(rotate(pl, {1, 0}) - origin, d);
-      d = normalized(d);
-      n = normalized(n);
-      Vec3 c3 = rotate(pl, pc);
-      if (is_tube(pattern, static_cast<int>(pi), pb.width())) {
-        // Roll into a tube of its own width around an axis on the body's side of the piece.
-        Vec3 to_body = Vec3{centre.x, c3.y, centre.z} - c3;
-        Vec3 inward = dot(to_body, n) >= 0 ? n : -n;
-        roll(pts, c3, d, inward, pb.width() / (2 * kPi));
-      } else if (std::abs(d.y) > 0.8) {
-        // Roll around the body's vertical axis if the piece faces it and does not wrap too far.
-        Vec3 axis_pt{centre.x, c3.y, centre.z};
-        double rs = dot(c3 - axis_pt, n);
-        Vec3 inward = rs >= 0 ? -n : n;
-        double r = std::abs(rs);
-        Vec3 foot = axis_pt - inward * r;
-        Vec3 t = cross(d, inward);
-        double s_max = 0;
-        for (const Vec3& p : pts) s_max = std::max(s_max, std::abs(dot(p - foot, t)));
-        if (r > kMinRollRadiusMm && s_max / r < kMaxRollAngle) roll(pts, foot, d, inward, r);
-      }
-      continue;
-    }
-
-    // No placement: choose an angle around the body by role, a height by garment kind.
-    const std::string& role = piece.role;
-    double theta = contains(role, "back") ? kPi : contains(role, "sleeve") ? (piece.mirrored ? -kPi / 2 : kPi / 2)
-                 : contains(role, "front") ? 0.0 : kPi / 2 * (pi % 2 ? 1 : -1);
-    bool lower = contains(role, "skirt") || contains(role, "waist") || contains(role, "gore");
-    double top_y = bb.min.y + height * (lower ? 0.62 : 0.82);
-    double used = slot_used_mm[theta];
-    slot_used_mm[theta] = used + pb.width();
-    // Along the circumference: consecutive pieces of one slot sit side by side.
-    for (Vec2 v : m.vertices_mm) {
-      double s = used + (v.x - pb.min.x) - pb.width() / 2;
-      double a = theta + s / fallback_r;
-      pts.push_back(Vec3{centre.x + fallback_r * std::sin(a), top_y - (pb.max.y - v.y), centre.z + fallback_r * std::cos(a)});
+    const Placement3d& pl = placements[pi];
+    for (Vec2 v : m.vertices_mm) pts.push_back(rotate(pl, v));
+    const Vec3 origin = rotate(pl, {0, 0});
+    Vec3 d = rotate(pl, {0, 1}) - origin, n = cross(rotate(pl, {1, 0}) - origin, d);
+    d = normalized(d);
+    n = normalized(n);
+    Vec3 c3 = rotate(pl, pc);
+    if (is_tube(pattern, static_cast<int>(pi), pb.width())) {
+      // Roll into a tube of its own width around an axis on the body's side of the piece.
+      Vec3 to_body = Vec3{centre.x, c3.y, centre.z} - c3;
+      Vec3 inward = dot(to_body, n) >= 0 ? n : -n;
+      roll(pts, c3, d, inward, pb.width() / (2 * kPi));
+    } else if (std::abs(d.y) > 0.8) {
+      // Roll around the body's vertical axis if the piece faces it and does not wrap too far.
+      Vec3 axis_pt{centre.x, c3.y, centre.z};
+      double rs = dot(c3 - axis_pt, n);
+      Vec3 inward = rs >= 0 ? -n : n;
+      double r = std::abs(rs);
+      Vec3 foot = axis_pt - inward * r;
+      Vec3 t = cross(d, inward);
+      double s_max = 0;
+      for (const Vec3& p : pts) s_max = std::max(s_max, std::abs(dot(p - foot, t)));
+      if (r > kMinRollRadiusMm && s_max / r < kMaxRollAngle) roll(pts, foot, d, inward, r);
     }
   }
   return out;

@@ -15,9 +15,8 @@ namespace tp::geometry {
 /// whose axis is parallel to the piece's placed y axis: a piece sewn to itself across its
 /// width (sleeve, waistband) becomes a tube of its own width; a near-vertical piece facing
 /// the body's vertical axis is rolled around that axis at its own distance. Pieces without a
-/// placement are laid on a cylinder around the body by role ("front" at the front, "back"
-/// behind, "sleeve" at the sides, others between), tops hanging from the shoulders and
-/// skirts ("skirt", "waistband", "gore" roles) from the waist.
+/// placement are first given one from their role and the body's landmarks (role_placements:
+/// fronts in front, backs behind, sleeves along the arms, waistbands at the waist).
 std::vector<std::vector<Vec3>> initial_placement(const Pattern& pattern, const PatternMesh& meshes, const BodySdf& body);
 
 }  // namespace tp::geometry

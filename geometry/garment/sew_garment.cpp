@@ -136,6 +136,7 @@ Result<Garment> sew_garment(const Pattern& pattern, const PatternMesh& meshes, c
     auto coarse = sew_garment(pattern, body, coarse_opt, &coarse_stats, cancel);
     if (!coarse) return fail(coarse.error());
     st.sewing_iterations = coarse_stats.sewing_iterations;
+    st.stitch_gap_mm = std::move(coarse_stats.stitch_gap_mm);
     for (size_t p = 0; p < pattern.pieces.size(); ++p) {
       auto pos = interpolate_chart(coarse->pieces[p], coarse->vertices_mm, meshes.pieces[p]);
       cloth.x_mm.insert(cloth.x_mm.end(), pos.begin(), pos.end());
@@ -153,6 +154,16 @@ Result<Garment> sew_garment(const Pattern& pattern, const PatternMesh& meshes, c
       if (!r) return fail(r.error().with_context("pattern '" + pattern.name + "': sewing"));
       st.sewing_iterations += r->iterations;
     }
+  }
+
+  // How far apart each stitch's two sides ended (the fit checks' stitch gap), before merging
+  // hides it. With two levels the fine start is already merged: the coarse level's gaps stand.
+  if (!two_level) {
+    st.stitch_gap_mm.assign(pattern.stitches.size(), {});
+    for (size_t s = 0; s < pattern.stitches.size(); ++s)
+      for (const auto& pr : meshes.stitch_vertices[s])
+        st.stitch_gap_mm[s].push_back(norm(cloth.x_mm[pr[0] + offset[pattern.stitches[s].a.piece]] -
+                                           cloth.x_mm[pr[1] + offset[pattern.stitches[s].b.piece]]));
   }
 
   // Merge: every stitched pair (transitively) becomes one 3D vertex at the pair's mean.

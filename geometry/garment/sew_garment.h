@@ -1,6 +1,8 @@
 // geometry/garment/sew_garment.h: the 3D garment: pieces meshed, placed, sewn and relaxed on a body.
 #pragma once
 
+#include <vector>
+
 #include "geometry/body/body_sdf.h"
 #include "geometry/common/cancel.h"
 #include "geometry/common/error.h"
@@ -37,6 +39,9 @@ struct SewStats {
   double last_move_mm = 0;
   int contacts = 0;       ///< vertices in contact with the body at the end
   int collapsed_triangles = 0;  ///< triangles whose corners sewing merged (left out of the solve)
+  /// Per stitch, per sewn vertex pair: the distance (mm) between its two sides at the end of
+  /// sewing, before they are merged (with coarse_factor: the coarse level's).
+  std::vector<std::vector<double>> stitch_gap_mm;
   double seconds = 0;
 };
 

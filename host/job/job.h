@@ -12,6 +12,15 @@
 
 namespace tp::host {
 
+/// Limits of the fit checks on a sewn garment (docs/garments.md, "Fit checks"); a garment
+/// beyond any of them fails the garment stage.
+struct GarmentChecksSpec {
+  double max_stitch_gap_mm = 2;              ///< largest distance between a stitch's two sides before merging
+  double max_self_intersections = 0.002;     ///< intersecting triangle pairs, fraction of triangles
+  double max_inside_body = 0.002;            ///< vertices inside the body, fraction of vertices
+  double max_off_body = 0.05;                ///< area farther than 150 mm from the body, fraction
+};
+
 /// Where the garment comes from.
 struct GarmentSpec {
   std::optional<std::filesystem::path> pattern;       ///< pattern file (native JSON, GarmentCode, SVG, DXF)
@@ -25,6 +34,9 @@ struct GarmentSpec {
   std::optional<std::filesystem::path> body_mesh;
   double body_mesh_scale_to_mm = 1.0;
   std::string stitches = "pattern";                   ///< "pattern", "suggest"
+  double suggest_min_score = 0.7;                     ///< "suggest": suggestions scoring below are dropped
+  std::optional<std::filesystem::path> stitches_file; ///< stitches file (printctl pattern suggest), added to the pattern's
+  GarmentChecksSpec checks;
   double mesh_edge_mm = 15;                           ///< target triangle edge length
 };
 

@@ -42,7 +42,8 @@ void read_asset(FieldReader& r, const std::string& key, bool required, const Job
 }
 
 void read_garment(FieldReader g, const JobPackage* pkg, GarmentSpec& spec) {
-  g.reject_unknown({"pattern", "pattern_format", "garment_mesh", "sample", "size", "body", "stitches", "mesh_edge"});
+  g.reject_unknown({"pattern", "pattern_format", "garment_mesh", "sample", "size", "body", "stitches", "mesh_edge",
+                    "suggest_min_score", "stitches_file", "checks"});
   read_asset(g, "pattern", false, pkg, spec.pattern);
   if (auto v = g.choice("pattern_format", false, {"auto", "native", "garmentcode", "freesewing-svg", "dxf-aama"}))
     spec.pattern_format = *v;
@@ -51,6 +52,15 @@ void read_garment(FieldReader g, const JobPackage* pkg, GarmentSpec& spec) {
   if (auto v = g.string("size", false)) spec.size = *v;
   if (auto v = g.choice("stitches", false, {"pattern", "suggest"})) spec.stitches = *v;
   if (auto v = g.length_mm("mesh_edge", false, 2, 200)) spec.mesh_edge_mm = *v;
+  if (auto v = g.number("suggest_min_score", false, 0, 1)) spec.suggest_min_score = *v;
+  read_asset(g, "stitches_file", false, pkg, spec.stitches_file);
+  if (auto c = g.object("checks", false)) {
+    c->reject_unknown({"stitch_gap", "self_intersections", "inside_body", "off_body"});
+    if (auto v = c->length_mm("stitch_gap", false, 0, 1000)) spec.checks.max_stitch_gap_mm = *v;
+    if (auto v = c->number("self_intersections", false, 0, 1)) spec.checks.max_self_intersections = *v;
+    if (auto v = c->number("inside_body", false, 0, 1)) spec.checks.max_inside_body = *v;
+    if (auto v = c->number("off_body", false, 0, 1)) spec.checks.max_off_body = *v;
+  }
   int sources = (spec.pattern ? 1 : 0) + (spec.garment_mesh ? 1 : 0) + (spec.sample.empty() ? 0 : 1);
   if (sources == 0 && !g.problems().items().size())
     g.problems().add(g.pointer(), "one of \"pattern\", \"garment_mesh\" or \"sample\" is required");

@@ -74,7 +74,7 @@ Result<bool> find_plan_garment(PipelineState& ps) {
   return ps.plan_garment.has_value();
 }
 
-Status load_plan_garment(PipelineState& ps) {
+Status load_plan_garment(PipelineState& ps, std::vector<std::vector<double>>* stitch_gaps_mm) {
   const fs::path& file = *ps.plan_garment;
   auto text = PlanStore::read(file);
   if (!text) return fail(text.error());
@@ -88,6 +88,23 @@ Status load_plan_garment(PipelineState& ps) {
     if (g->pieces[p].piece != static_cast<int>(p))
       return fail(ErrorCode::kPipeline, file.string() + ": stored piece " + std::to_string(p) + " is numbered " +
                                             std::to_string(g->pieces[p].piece));
+  // The stitch gaps measured when the garment was sewn (its fit checks need them).
+  if (auto gaps_file = ps.plan->find("stitch_gaps", ps.garment_key)) {
+    auto gaps_text = PlanStore::read(*gaps_file);
+    if (!gaps_text) return fail(gaps_text.error());
+    auto j = nlohmann::json::parse(*gaps_text, nullptr, false);
+    if (j.is_discarded() || !j.is_array())
+      return fail(ErrorCode::kPipeline, gaps_file->string() + ": not a JSON array of stitch gaps");
+    stitch_gaps_mm->clear();
+    for (const auto& stitch : j) {
+      if (!stitch.is_array()) return fail(ErrorCode::kPipeline, gaps_file->string() + ": a stitch's gaps are not an array");
+      auto& out = stitch_gaps_mm->emplace_back();
+      for (const auto& d : stitch) {
+        if (!d.is_number()) return fail(ErrorCode::kPipeline, gaps_file->string() + ": a stitch gap is not a number");
+        out.push_back(d.get<double>());
+      }
+    }
+  }
   ps.garment = std::move(*g);
   ps.garment_is_3d = is_3d;
   ps.garment_digest = digest_of(*text);
@@ -96,10 +113,13 @@ Status load_plan_garment(PipelineState& ps) {
   return {};
 }
 
-Status save_plan_garment(PipelineState& ps) {
+Status save_plan_garment(PipelineState& ps, const std::vector<std::vector<double>>& stitch_gaps_mm) {
   const std::string text = garment_to_text(*ps.garment, ps.garment_is_3d);
   ps.garment_digest = digest_of(text);
   if (!ps.plan) return {};
+  if (auto st = ps.plan->save("stitch_gaps", ps.garment_key, "stitch_gaps.json", nlohmann::json(stitch_gaps_mm).dump());
+      !st)
+    return st;
   if (auto st = ps.plan->save("garment", ps.garment_key, "garment.plan", text); !st) return st;
   note(ps, "garment", "made");
   return {};

@@ -1,11 +1,15 @@
 // host/pipeline/stage_garment.cpp: the garment stage: the pieces sewn on the job's body (or laid
-// flat when it has none), the distortion figures, the 3D garment as OBJ and its previews.
+// flat when it has none), aligned to the body first, the distortion figures and fit checks, the
+// 3D garment as OBJ and its previews.
 #include "geometry/body/load_body_obj.h"
+#include "geometry/garment/align_to_body.h"
 #include "geometry/garment/distortion.h"
+#include "geometry/garment/fit_checks.h"
 #include "geometry/garment/flat_garment.h"
 #include "geometry/garment/garment_obj.h"
 #include "geometry/garment/sew_garment.h"
 #include "geometry/samples/garments.h"
+#include "host/pipeline/garment_checks.h"
 #include "host/pipeline/garment_files.h"
 #include "host/pipeline/internal/pipeline_state.h"
 #include "host/pipeline/internal/plan_steps.h"
@@ -43,14 +47,25 @@ Status stage_garment(PipelineState& ps) {
   if (!body) return fail(body.error());
   ps.body = *body;
 
+  geometry::SewStats stats;
+  nlohmann::json alignment;
   if (ps.plan_garment) {
-    // The job's stored plan: never sewn twice (a resume or a reprint prints this garment).
-    if (auto st = load_plan_garment(ps); !st) return st;
+    // The job's stored plan: never sewn twice (a resume or a reprint prints this garment), and
+    // the stitch gaps measured when it was sewn come with it.
+    if (auto st = load_plan_garment(ps, &stats.stitch_gap_mm); !st) return st;
     ps.stage_reused = true;
   } else if (!ps.garment && ps.body) {
+    // A pattern placed around another body (or in a mirrored frame) is brought onto this one.
+    auto al = geometry::align_to_body(ps.pattern, *ps.body);
+    if (!al) return fail(from_geometry(al.error()));
+    if (al->moved)
+      alignment = {{"moved", true},
+                   {"turned", al->turned},
+                   {"offset_mm", {al->offset_mm.x, al->offset_mm.y, al->offset_mm.z}},
+                   {"garment_kind", al->garment_kind},
+                   {"reason", al->reason}};
     geometry::SewOptions opt;
     opt.target_edge_mm = ps.job.garment.mesh_edge_mm;
-    geometry::SewStats stats;
     auto g = geometry::sew_garment(ps.pattern, *ps.meshes, *ps.body, opt, &stats, &ps.cancel);
     if (!g) return fail(from_geometry(g.error()));
     ps.garment = std::move(*g);
@@ -65,9 +80,6 @@ Status stage_garment(PipelineState& ps) {
     ps.garment = std::move(*g);
     ps.garment_is_3d = false;
   }
-  if (!ps.stage_reused)
-    if (auto st = save_plan_garment(ps); !st) return st;
-
   geometry::DistortionReport d = geometry::measure_distortion(ps.pattern, *ps.garment, ps.body.get());
   ps.report["garment"] = {{"mode", ps.garment_is_3d ? "3d" : "flat"},
                           {"vertices", d.vertices},
@@ -79,7 +91,13 @@ Status stage_garment(PipelineState& ps) {
                           {"seam_len_diff_max", d.seam_len_diff_max},
                           {"inside_body", d.inside_body},
                           {"min_clearance_mm", ps.body ? d.min_clearance_mm : 0.0}};
-  if (!ps.garment_is_3d) return {};
+  ps.report["garment"]["stitches"] = stitches_json(ps.pattern, ps.stitch_sources, stats.stitch_gap_mm);
+  if (!alignment.is_null()) ps.report["garment"]["alignment"] = alignment;
+  if (!ps.garment_is_3d) {
+    if (!ps.stage_reused)
+      if (auto st = save_plan_garment(ps, stats.stitch_gap_mm); !st) return st;
+    return {};
+  }
 
   // The 3D garment with its per-piece texture coordinates, and the previews for the report.
   const auto& out = ps.options.out_dir;
@@ -88,6 +106,15 @@ Status stage_garment(PipelineState& ps) {
                                          rip::PngChannels::kRgba);
   if (!previews) return fail(previews.error());
   ps.report["garment"]["files"] = {{"obj", "garment.obj"}, {"previews", *previews}};
+
+  // Fit checks on the final garment: a garment not sewn, tangled or off the body fails here.
+  const geometry::FitLimits limits = fit_limits(ps.job.garment.checks);
+  geometry::FitReport fit = geometry::check_fit(ps.pattern, *ps.garment, ps.body.get(), stats.stitch_gap_mm, limits);
+  ps.report["garment"]["checks"] = checks_json(ps.pattern, fit, limits, "garment-");
+  if (!fit.pass) return fail(ErrorCode::kPipeline, checks_failure_message(fit, "garment-"));
+  // Only a garment that passed its checks becomes the job's plan.
+  if (!ps.stage_reused)
+    if (auto st = save_plan_garment(ps, stats.stitch_gap_mm); !st) return st;
   return {};
 }
 

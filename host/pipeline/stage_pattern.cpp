@@ -1,9 +1,12 @@
 // host/pipeline/stage_pattern.cpp: the pattern stage (from a file, an OBJ garment or a project
 // sample) and the mesh stage (each piece triangulated once, seams matched).
+#include <algorithm>
 #include <cstdio>
 
 #include "geometry/pattern/load_pattern.h"
 #include "geometry/pattern/obj_garment.h"
+#include "geometry/pattern/stitches_json.h"
+#include "geometry/pattern/suggest_stitches.h"
 #include "geometry/pattern/validate.h"
 #include "geometry/samples/garments.h"
 #include "geometry/samples/sizes.h"
@@ -34,6 +37,39 @@ Result<geometry::BodyMeasurements> job_measurements(const Job& job) {
 
 Error from_geometry(const geometry::Error& e) { return Error{ErrorCode::kPipeline, e.message}; }
 
+// Stitches a job adds to its pattern's (a stitches file, suggestions) may be eased up to the
+// suggestions' own limit; the pattern's own stitches are held to the default tolerance.
+geometry::ValidationOptions added_stitch_tolerance() {
+  geometry::ValidationOptions o;
+  o.stitch_length_tolerance_ratio = std::max(geometry::SuggestOptions{}.max_ease_ratio, geometry::SuggestOptions{}.length_tolerance_ratio);
+  return o;
+}
+
+// The job's stitches file, then suggestions for the edges still free ("stitches": "suggest").
+// Records each stitch's source in ps.stitch_sources (index-aligned with pattern.stitches).
+Status add_job_stitches(PipelineState& ps) {
+  const GarmentSpec& g = ps.job.garment;
+  ps.stitch_sources.assign(ps.pattern.stitches.size(), nlohmann::json{{"source", "pattern"}});
+  if (g.stitches_file) {
+    auto st = geometry::load_stitches_json(*g.stitches_file, ps.pattern);
+    if (!st) return fail(Error{ErrorCode::kValidation, st.error().message}.with_context("job.json: /garment/stitches_file"));
+    for (auto& s : *st) {
+      ps.pattern.stitches.push_back(s);
+      ps.stitch_sources.push_back({{"source", "job"}, {"file", g.stitches_file->filename().string()}});
+    }
+  }
+  if (g.stitches == "suggest") {
+    geometry::SuggestOptions opt;
+    opt.min_score = g.suggest_min_score;
+    for (const auto& s : geometry::suggest_stitches(ps.pattern, opt))
+      for (const auto& st : s.stitches) {
+        ps.pattern.stitches.push_back(st);
+        ps.stitch_sources.push_back({{"source", "suggested"}, {"score", s.score}, {"reason", s.reason}});
+      }
+  }
+  return {};
+}
+
 }  // namespace
 
 Status stage_pattern(PipelineState& ps) {
@@ -61,6 +97,20 @@ Status stage_pattern(PipelineState& ps) {
   }
   if (auto st = geometry::validate_pattern(ps.pattern); !st)
     return fail(from_geometry(st.error()).with_context("pattern"));
+  const std::size_t own_stitches = ps.pattern.stitches.size();
+  if (!g.garment_mesh) {
+    if (auto st = add_job_stitches(ps); !st) return st;
+    if (ps.pattern.stitches.size() > own_stitches)
+      if (auto st = geometry::validate_pattern(ps.pattern, added_stitch_tolerance()); !st)
+        return fail(Error{ErrorCode::kValidation, st.error().message}.with_context("pattern with the job's stitches"));
+  }
+  // A body asks for a sewn garment: a pattern with nothing to sew would only wrap pieces round it.
+  if (g.body_kind != "none" && !g.garment_mesh && g.sample.empty() && ps.pattern.stitches.empty())
+    return fail(ErrorCode::kValidation,
+                "pattern '" + ps.pattern.name + "': no stitches to sew it on the body with (the pattern has none" +
+                    std::string(g.stitches == "suggest" ? " and no suggestion scored " + std::to_string(g.suggest_min_score).substr(0, 4) + " or more"
+                                                        : "; set /garment/stitches to \"suggest\" or give /garment/stitches_file") +
+                    "); a job without a body prints it flat");
 
   nlohmann::json pieces = nlohmann::json::array();
   for (const auto& p : ps.pattern.pieces) pieces.push_back(p.name);
@@ -68,7 +118,8 @@ Status stage_pattern(PipelineState& ps) {
                           {"size", ps.pattern.size},
                           {"piece_count", ps.pattern.pieces.size()},
                           {"pieces", pieces},
-                          {"stitch_count", ps.pattern.stitches.size()}};
+                          {"stitch_count", ps.pattern.stitches.size()},
+                          {"own_stitch_count", own_stitches}};
   ps.report["piece_count"] = ps.pattern.pieces.size();
   return {};
 }

@@ -1,5 +1,6 @@
 // host/app/printctl/cmd_bench_garment.cpp: `printctl bench garment`: builds garments at a given vertex
-// count and prints their distortion figures and build time (issue 4's figures).
+// count (samples, one pattern, or every pattern of a corpus folder) and prints their distortion,
+// fit-check figures and build time.
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -9,14 +10,20 @@
 
 #include "geometry/body/body_sdf.h"
 #include "geometry/body/load_body_obj.h"
+#include "geometry/garment/align_to_body.h"
 #include "geometry/garment/distortion.h"
+#include "geometry/garment/fit_checks.h"
 #include "geometry/garment/sew_garment.h"
 #include "geometry/mesh/mesh_pattern.h"
 #include "geometry/pattern/garmentcode.h"
+#include "geometry/pattern/load_pattern.h"
 #include "geometry/pattern/pattern_json.h"
+#include "geometry/pattern/suggest_stitches.h"
 #include "geometry/samples/garments.h"
 #include "geometry/samples/sizes.h"
+#include "host/app/printctl/bench_garment_corpus.h"
 #include "host/app/printctl/commands.h"
+#include "host/pipeline/garment_checks.h"
 #include "host/pipeline/garment_files.h"
 
 namespace tp::host::cli {
@@ -32,7 +39,15 @@ struct BenchGarmentArgs {
   int threads = 2;
   std::string data;
   std::string out;  ///< when set: each garment's OBJ and previews go here
+  std::vector<std::string> corpus;  ///< folders whose every pattern is benched on its body
+  double min_score = geometry::SuggestOptions{}.min_score;  ///< suggestions for patterns without stitches
   geometry::SewOptions sew;  ///< solver settings other than mesh size and threads
+  geometry::FitLimits limits;
+};
+
+/// Pass/fail tallies of a run, for the corpus summary.
+struct Tally {
+  int patterns = 0, pass = 0, fail = 0, errors = 0;
 };
 
 [[noreturn]] void die(const std::string& msg, int code) {
@@ -60,17 +75,36 @@ std::string seam_lines(const geometry::Pattern& pattern, const geometry::Distort
   return out;
 }
 
-// Meshes `pattern` for about `vertices` vertices, sews it on `body` and prints one line.
-void bench_one(const std::string& name, const geometry::Pattern& pattern, const geometry::BodySdf& body,
-               const BenchGarmentArgs& a) {
+// Meshes `pattern` for about `vertices` vertices, sews it on `body` and prints one line. A pattern
+// without stitches gets the suggested ones; one placed around another body is aligned first.
+// Failures of one pattern print `error=` and count, so a corpus run goes on.
+void bench_one(const std::string& name, geometry::Pattern pattern, const geometry::BodySdf& body,
+               const BenchGarmentArgs& a, Tally& tally) {
+  ++tally.patterns;
+  auto error_line = [&](const std::string& why) {
+    ++tally.errors;
+    std::printf("garment=%s checks=error error=\"%s\"\n", name.c_str(), why.c_str());
+    std::fflush(stdout);
+  };
+  int suggested = 0;
+  if (pattern.stitches.empty()) {
+    geometry::SuggestOptions so;
+    so.min_score = a.min_score;
+    suggested = geometry::accept_suggestions(pattern, geometry::suggest_stitches(pattern, so), a.min_score);
+  }
+  if (pattern.stitches.empty()) return error_line("no stitches (none in the pattern, none suggested)");
+  auto al = geometry::align_to_body(pattern, body);
+  if (!al) return error_line(al.error().message);
   const auto t0 = std::chrono::steady_clock::now();
   geometry::SewOptions o = a.sew;
   o.target_edge_mm = geometry::target_edge_for_vertex_count(pattern, a.vertices);
   o.threads = a.threads;
-  auto g = geometry::sew_garment(pattern, body, o);
-  if (!g) die(name + ": " + g.error().what(), 1);
+  geometry::SewStats stats;
+  auto g = geometry::sew_garment(pattern, body, o, &stats);
+  if (!g) return error_line(g.error().what());
   const double seconds = since(t0);
   geometry::DistortionReport r = geometry::measure_distortion(pattern, *g, &body);
+  geometry::FitReport fit = geometry::check_fit(pattern, *g, &body, stats.stitch_gap_mm, a.limits);
   if (!a.out.empty()) {
     std::error_code ec;
     std::filesystem::create_directories(a.out, ec);
@@ -79,18 +113,24 @@ void bench_one(const std::string& name, const geometry::Pattern& pattern, const 
     if (auto st = write_text_file(std::filesystem::path(a.out) / (name + "_seams.txt"), seam_lines(pattern, r)); !st)
       die(st.error().what(), 1);
   }
-  std::printf("garment=%s vertices=%d strain_mean=%.4f strain_p95=%.4f seam_len_diff_max=%.4f inside_body=%d seconds=%.2f\n",
-              name.c_str(), r.vertices, r.strain_mean, r.strain_p95, r.seam_len_diff_max, r.inside_body, seconds);
+  (fit.pass ? tally.pass : tally.fail)++;
+  std::string failed;
+  for (const auto& f : fit.failures) failed += (failed.empty() ? "" : ",") + f.check;
+  std::printf("garment=%s vertices=%d stitches=%zu suggested=%d stitch_gap_max_mm=%.2f stitch_gap_p95_mm=%.2f "
+              "self_intersections=%d inside_body=%d body_distance_p50_mm=%.1f body_distance_p95_mm=%.1f off_body=%.4f unsewn=%zu "
+              "strain_mean=%.4f strain_p95=%.4f seam_len_diff_max=%.4f aligned=%s seconds=%.2f checks=%s%s%s\n",
+              name.c_str(), r.vertices, pattern.stitches.size(), suggested, fit.stitch_gap_max_mm, fit.stitch_gap_p95_mm,
+              fit.self_intersections, fit.inside_body, fit.body_distance_p50_mm, fit.body_distance_p95_mm, fit.off_body, fit.unsewn_pieces.size(),
+              r.strain_mean, r.strain_p95, r.seam_len_diff_max, al->moved ? "yes" : "no", seconds,
+              fit.pass ? "pass" : "fail", failed.empty() ? "" : " failed=", failed.c_str());
+  for (const auto& f : fit.failures) std::printf("  %s: %s (look at %s_%s.png)\n", f.check.c_str(), f.message.c_str(), name.c_str(), f.view.c_str());
   std::fflush(stdout);
 }
 
 geometry::Pattern load_pattern(const std::string& path) {
-  // GarmentCode specifications hold a "panels" object; anything else is the native format.
-  auto gc = geometry::load_garmentcode(path);
-  if (gc) return std::move(*gc);
-  auto native = geometry::load_pattern_json(path);
-  if (!native) die(native.error().what(), 2);
-  return std::move(*native);
+  auto p = geometry::load_pattern(path);
+  if (!p) die(p.error().what(), 2);
+  return std::move(*p);
 }
 
 std::shared_ptr<const geometry::BodySdf> load_body(const std::string& path, double mm_per_unit) {
@@ -101,12 +141,40 @@ std::shared_ptr<const geometry::BodySdf> load_body(const std::string& path, doub
   return std::make_shared<const geometry::BodySdf>(std::move(*sdf));
 }
 
+void run_corpus(const BenchGarmentArgs& a) {
+  for (const std::string& dir : a.corpus) {
+    auto entries = corpus_entries(dir);
+    if (!entries) die(entries.error().message, 2);
+    Tally tally;
+    for (const CorpusEntry& e : *entries) {
+      if (!e.error.empty()) {
+        ++tally.patterns;
+        ++tally.errors;
+        std::printf("garment=%s checks=error error=\"%s\"\n", e.name.c_str(), e.error.c_str());
+        continue;
+      }
+      auto p = geometry::load_pattern(e.pattern);
+      if (!p) {
+        ++tally.patterns;
+        ++tally.errors;
+        std::printf("garment=%s checks=error error=\"%s\"\n", e.name.c_str(), p.error().what().c_str());
+        continue;
+      }
+      bench_one(e.name, std::move(*p), *e.body, a, tally);
+    }
+    std::printf("corpus=%s patterns=%d pass=%d fail=%d errors=%d\n", dir.c_str(), tally.patterns, tally.pass, tally.fail,
+                tally.errors);
+    std::fflush(stdout);
+  }
+}
+
 void run_bench_garment(const BenchGarmentArgs& a) {
+  Tally tally;
+  if (!a.corpus.empty()) return run_corpus(a);
   if (!a.pattern.empty()) {
     if (a.body.empty()) die("--pattern needs --body", 2);
     auto body = load_body(a.body, a.body_mm_per_unit);
-    geometry::Pattern p = load_pattern(a.pattern);
-    bench_one(std::filesystem::path(a.pattern).stem().string(), p, *body, a);
+    bench_one(std::filesystem::path(a.pattern).stem().string(), load_pattern(a.pattern), *body, a, tally);
     return;
   }
   auto m = geometry::samples::parse_size(a.size);
@@ -117,7 +185,7 @@ void run_bench_garment(const BenchGarmentArgs& a) {
   for (const std::string& name : names) {
     auto p = geometry::samples::draft_garment(name, *m, a.size);
     if (!p) die(p.error().what(), 2);
-    bench_one(name, *p, **body, a);
+    bench_one(name, std::move(*p), **body, a, tally);
   }
   if (!a.garment.empty()) return;
   // The GarmentCode references on their average female body.
@@ -127,7 +195,7 @@ void run_bench_garment(const BenchGarmentArgs& a) {
     auto path = data / "garmentcode/patterns" / (std::string(spec) + "_specification.json");
     auto p = geometry::load_garmentcode(path);
     if (!p) die(p.error().what(), 2);
-    bench_one(spec, *p, *mean_female, a);
+    bench_one(spec, std::move(*p), *mean_female, a, tally);
   }
 }
 
@@ -154,6 +222,19 @@ void register_bench_garment(CLI::App& bench) {
   cmd->add_option("--seam-edge-weight", args->sew.seam_edge_weight, "stiffness of sewn seams against their pattern length")
       ->check(CLI::Range(0.0, 1e6));
   cmd->add_option("--gravity", args->sew.gravity_per_mm, "weight per area relative to membrane stiffness")
+      ->check(CLI::Range(0.0, 1.0));
+  cmd->add_option("--corpus", args->corpus, "bench every pattern of this folder on its body (sidecar <stem>.body.json "
+                                            "or the rules in docs/garments.md); repeatable")
+      ->check(CLI::ExistingDirectory);
+  cmd->add_option("--min-score", args->min_score, "suggested stitches for patterns without any: minimum score")
+      ->check(CLI::Range(0.0, 1.0));
+  cmd->add_option("--max-stitch-gap-mm", args->limits.max_stitch_gap_mm, "fit check: stitch gap limit")
+      ->check(CLI::Range(0.0, 1000.0));
+  cmd->add_option("--max-self-intersections", args->limits.max_self_intersections,
+                  "fit check: intersecting triangle pairs per triangle")->check(CLI::Range(0.0, 1.0));
+  cmd->add_option("--max-inside-body", args->limits.max_inside_body, "fit check: fraction of vertices inside the body")
+      ->check(CLI::Range(0.0, 1.0));
+  cmd->add_option("--max-off-body", args->limits.max_off_body, "fit check: area fraction over 150 mm from the body")
       ->check(CLI::Range(0.0, 1.0));
   cmd->add_option("--out", args->out, "also write each garment's OBJ, body OBJ, previews and seam lengths into this folder");
   cmd->add_option("--data", args->data, "shared reference data folder (default $TP_SHARED_DATA or ../shared/data)");

@@ -16,6 +16,8 @@ void register_daemon_commands(CLI::App& app);
 void register_link_commands(CLI::App& app);
 // Garment tools (cmd_garment.cpp): garment (write a sample pattern and its 3D garment).
 void register_garment_commands(CLI::App& app);
+// Pattern tools (cmd_pattern.cpp): pattern suggest (stitches for a pattern that has none).
+void register_pattern_commands(CLI::App& app);
 
 // Benchmarks under `printctl bench` (cmd_bench_<what>.cpp).
 void register_bench_link(CLI::App& bench);

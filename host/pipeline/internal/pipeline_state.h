@@ -31,6 +31,8 @@ struct PipelineState {
   nlohmann::json& report;
 
   geometry::Pattern pattern;
+  /// Per pattern stitch, where it came from: {"source": "pattern"|"job"|"suggested", "score", "reason"}.
+  std::vector<nlohmann::json> stitch_sources;
   std::optional<geometry::BodyMeasurements> measurements;   ///< sample garments and dress forms
   std::shared_ptr<const geometry::BodySdf> body;            ///< collision body, if the job has one
   std::optional<geometry::PatternMesh> meshes;

@@ -23,11 +23,13 @@ namespace tp::host::internal {
 [[nodiscard]] Result<bool> find_plan_garment(PipelineState& ps);
 
 /// The stored garment (find_plan_garment said there is one) into ps.garment, checked against
-/// the pattern. Fails naming the file when it is corrupt or belongs to another pattern.
-[[nodiscard]] Status load_plan_garment(PipelineState& ps);
+/// the pattern, and the stitch gaps measured when it was sewn into `stitch_gaps_mm` (one list per
+/// stitch, mm). Fails naming the file when it is corrupt or belongs to another pattern.
+[[nodiscard]] Status load_plan_garment(PipelineState& ps, std::vector<std::vector<double>>* stitch_gaps_mm);
 
-/// Records ps.garment in the plan under ps.garment_key (no-op without a plan).
-[[nodiscard]] Status save_plan_garment(PipelineState& ps);
+/// Records ps.garment and its stitch gaps (mm, per stitch) in the plan under ps.garment_key
+/// (no-op without a plan). Called once the garment has passed its fit checks.
+[[nodiscard]] Status save_plan_garment(PipelineState& ps, const std::vector<std::vector<double>>& stitch_gaps_mm);
 
 /// The stored markers when the plan holds markers nested from exactly `items` under `options`.
 [[nodiscard]] Result<std::optional<std::vector<geometry::Marker>>> find_plan_markers(

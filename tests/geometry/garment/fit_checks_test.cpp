@@ -1,0 +1,188 @@
+// tests/geometry/garment/fit_checks_test.cpp: fit checks pass a sewn tube and fail it off the body, unsewn or tangled; alignment.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "geometry/body/body_sdf.h"
+#include "geometry/body/marching_tetrahedra.h"
+#include "geometry/garment/align_to_body.h"
+#include "geometry/garment/fit_checks.h"
+#include "geometry/garment/sew_garment.h"
+
+namespace tp::geometry {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// A closed capped cylinder of radius r round the vertical line (cx, cz), from y0 to y1.
+BodySdf cylinder_body(double r, double y0, double y1, double cx = 0) {
+  ScalarGrid g;
+  g.spacing_mm = 5;
+  g.origin_mm = {cx - r - 20, y0 - 20, -r - 20};
+  g.nx = g.nz = static_cast<int>(std::ceil((2 * r + 40) / 5)) + 1;
+  g.ny = static_cast<int>(std::ceil((y1 - y0 + 40) / 5)) + 1;
+  for (int k = 0; k < g.nz; ++k)
+    for (int j = 0; j < g.ny; ++j)
+      for (int i = 0; i < g.nx; ++i) {
+        Vec3 p = g.origin_mm + Vec3{double(i), double(j), double(k)} * 5.0;
+        g.values.push_back(static_cast<float>(std::max({std::hypot(p.x - cx, p.z) - r, y0 - p.y, p.y - y1})));
+      }
+  auto sdf = BodySdf::build(marching_tetrahedra(g), 6, 3);
+  EXPECT_TRUE(sdf);
+  return std::move(*sdf);
+}
+
+Piece rectangle(const std::string& name, double w, double h) {
+  Piece p;
+  p.name = name;
+  p.role = name;
+  p.edges = {Edge{"hem", EdgeCurve::kLine, {}, {{0, 0}, {w, 0}}}, Edge{"right", EdgeCurve::kLine, {}, {{w, 0}, {w, h}}},
+             Edge{"top", EdgeCurve::kLine, {}, {{w, h}, {0, h}}}, Edge{"left", EdgeCurve::kLine, {}, {{0, h}, {0, 0}}}};
+  return p;
+}
+
+// Two panels that close into a tube of radius 115 round a cylinder of radius 100 (y 100..400).
+Pattern tube_pattern() {
+  const double w = kPi * 115, h = 300;
+  Pattern p;
+  p.name = "tube";
+  p.pieces = {rectangle("front", w, h), rectangle("back", w, h)};
+  p.pieces[0].placement = Placement3d{{1, 0, 0, 0, 1, 0, 0, 0, 1}, {-w / 2, 100, 115}};
+  p.pieces[1].placement = Placement3d{{-1, 0, 0, 0, 1, 0, 0, 0, -1}, {w / 2, 100, -115}};
+  p.stitches = {Stitch{EdgeSpan{0, 1, 0, -1}, EdgeSpan{1, 3, 0, -1}, false},
+                Stitch{EdgeSpan{1, 1, 0, -1}, EdgeSpan{0, 3, 0, -1}, false}};
+  return p;
+}
+
+struct Sewn {
+  Garment garment;
+  SewStats stats;
+};
+
+Sewn sew(const Pattern& p, const BodySdf& body) {
+  Sewn s;
+  auto g = sew_garment(p, body, SewOptions{.target_edge_mm = 20}, &s.stats);
+  EXPECT_TRUE(g) << g.error().what();
+  if (g) s.garment = std::move(*g);
+  return s;
+}
+
+bool failed(const FitReport& r, const std::string& check) {
+  for (const auto& f : r.failures)
+    if (f.check == check) return true;
+  return false;
+}
+
+TEST(FitChecks, SewnTubeOnItsBodyPasses) {
+  BodySdf body = cylinder_body(100, 0, 600);
+  Pattern p = tube_pattern();
+  Sewn s = sew(p, body);
+  ASSERT_EQ(s.stats.stitch_gap_mm.size(), 2u);
+  FitReport r = check_fit(p, s.garment, &body, s.stats.stitch_gap_mm);
+  EXPECT_TRUE(r.pass) << (r.failures.empty() ? "" : r.failures[0].message);
+  EXPECT_EQ(r.stitches, 2);
+  EXPECT_LT(r.stitch_gap_max_mm, 2);
+  EXPECT_EQ(r.self_intersections, 0);
+  EXPECT_EQ(r.inside_body, 0);
+  EXPECT_NEAR(r.body_distance_p50_mm, 15, 6);  // radius 115 round radius 100
+  EXPECT_EQ(r.off_body, 0);
+}
+
+TEST(FitChecks, GarmentOneMetreOffTheBodyFails) {
+  BodySdf body = cylinder_body(100, 0, 600);
+  Pattern p = tube_pattern();
+  Sewn s = sew(p, body);
+  for (Vec3& v : s.garment.vertices_mm) v.x += 1000;
+  FitReport r = check_fit(p, s.garment, &body, s.stats.stitch_gap_mm);
+  EXPECT_FALSE(r.pass);
+  EXPECT_TRUE(failed(r, "off_body"));
+  EXPECT_GT(r.off_body, 0.99);
+  EXPECT_GT(r.body_distance_p95_mm, 800);
+  ASSERT_FALSE(r.failures.empty());
+  EXPECT_NE(r.failures.back().message.find("not on the body"), std::string::npos);
+  EXPECT_EQ(r.failures.back().view, "side");  // moved along x, the body's side
+}
+
+TEST(FitChecks, GarmentSewnOnTheWrongBodyFails) {
+  // The tube is placed round a body at x = 0; the job's body stands 1 m to the side. Sewing
+  // without alignment closes the tube in the air; the checks see it.
+  BodySdf wrong = cylinder_body(100, 0, 600, 1000);
+  Pattern p = tube_pattern();
+  Sewn s = sew(p, wrong);
+  FitReport r = check_fit(p, s.garment, &wrong, s.stats.stitch_gap_mm);
+  EXPECT_FALSE(r.pass);
+  EXPECT_TRUE(failed(r, "off_body"));
+}
+
+TEST(FitChecks, StitchGapBeyondTheLimitNamesTheStitch) {
+  BodySdf body = cylinder_body(100, 0, 600);
+  Pattern p = tube_pattern();
+  Sewn s = sew(p, body);
+  auto gaps = s.stats.stitch_gap_mm;
+  gaps[1].back() = 7.5;
+  FitReport r = check_fit(p, s.garment, &body, gaps);
+  EXPECT_FALSE(r.pass);
+  EXPECT_EQ(r.worst_stitch, 1);
+  EXPECT_DOUBLE_EQ(r.stitch_gap_max_mm, 7.5);
+  ASSERT_TRUE(failed(r, "stitch_gap"));
+  EXPECT_NE(r.failures[0].message.find("stitch 1, piece 'back' edge 'right'"), std::string::npos) << r.failures[0].message;
+  // A job may allow more.
+  FitLimits loose;
+  loose.max_stitch_gap_mm = 10;
+  EXPECT_TRUE(check_fit(p, s.garment, &body, gaps, loose).pass);
+}
+
+TEST(FitChecks, CrossingTrianglesCountNeighboursDoNot) {
+  Garment g;
+  GarmentPiece gp;
+  // Triangle 0 in z = 0; triangle 1 pierces it; triangle 2 shares an edge with triangle 0.
+  g.vertices_mm = {{0, 0, 0}, {10, 0, 0}, {0, 10, 0}, {2, 2, -5}, {2, 2, 5}, {4, 4, 0}, {10, 10, 0}};
+  gp.mesh.vertices_mm = {{0, 0}, {1, 0}, {0, 1}, {2, 2}, {2, 3}, {3, 3}, {4, 4}};
+  gp.mesh.triangles = {{0, 1, 2}, {3, 4, 5}, {1, 6, 2}};
+  gp.vertex_3d = {0, 1, 2, 3, 4, 5, 6};
+  g.pieces = {gp};
+  std::vector<int> per_piece;
+  EXPECT_EQ(count_self_intersections(g, &per_piece), 1);
+  EXPECT_EQ(per_piece[0], 2);
+}
+
+TEST(AlignToBody, PatternPlacedAroundAnotherBodyIsMovedOntoThisOne) {
+  // The tube was placed round a body at the origin; this body stands 1 m up and 0.5 m aside.
+  BodySdf body = cylinder_body(100, 1000, 2600, 500);
+  Pattern p = tube_pattern();
+  auto al = align_to_body(p, body);
+  ASSERT_TRUE(al) << al.error().what();
+  EXPECT_TRUE(al->moved);
+  EXPECT_FALSE(al->turned);
+  EXPECT_NEAR(al->offset_mm.x, 500, 10);
+  EXPECT_GT(al->offset_mm.y, 1000);
+  EXPECT_NE(al->reason.find("did not surround"), std::string::npos) << al->reason;
+  // Once aligned it surrounds the body: a second call leaves it.
+  auto again = align_to_body(p, body);
+  ASSERT_TRUE(again);
+  EXPECT_FALSE(again->moved);
+  // And it sews onto the body.
+  Sewn s = sew(p, body);
+  FitReport r = check_fit(p, s.garment, &body, s.stats.stitch_gap_mm);
+  EXPECT_TRUE(r.pass) << (r.failures.empty() ? "" : r.failures[0].message);
+}
+
+TEST(AlignToBody, MirroredFrameIsTurnedAndWrongUnitsRefused) {
+  BodySdf body = cylinder_body(100, 0, 600);
+  Pattern p = tube_pattern();
+  // Mirror the frame: the front behind, the back in front.
+  std::swap(p.pieces[0].placement, p.pieces[1].placement);
+  auto al = align_to_body(p, body);
+  ASSERT_TRUE(al);
+  EXPECT_TRUE(al->turned);
+  EXPECT_GT(p.pieces[0].placement->translation_mm.z, 0);
+
+  Pattern metres = tube_pattern();
+  for (Piece& pc : metres.pieces) pc.placement->translation_mm = pc.placement->translation_mm * 1000.0;
+  auto bad = align_to_body(metres, body);
+  ASSERT_FALSE(bad);
+  EXPECT_NE(bad.error().message.find("other units"), std::string::npos) << bad.error().message;
+}
+
+}  // namespace
+}  // namespace tp::geometry
