@@ -24,6 +24,7 @@ rip::RipSettings rip_settings(const PipelineState& ps) {
   s.ink_limit_percent = p.ink_limit_pct;
   s.first_swath_index = static_cast<std::uint32_t>(std::max<std::int64_t>(0, ps.options.resume_after_swath + 1));
   if (p.separations_tiff) s.separations.screened_tiff = ps.options.out_dir / "separations.tif";
+  s.mirror_print = p.transfer == "sublimation";
   return s;
 }
 
