@@ -77,7 +77,8 @@ Status stage_marker(PipelineState& ps) {
 
   auto preview = rip::render_marker_preview(ps.roll, *ps.renderer, ps.job.print.preview_dpi);
   if (!preview) return fail(ErrorCode::kPipeline, "marker.png: " + preview.error().message);
-  if (auto st = rip::write_png(ps.options.out_dir / "marker.png", *preview, rip::PngChannels::kRgbOverWhite); !st)
+  if (auto st = rip::write_png(ps.options.out_dir / "marker.png", *preview, rip::PngChannels::kRgbOverWhite,
+                                ps.job.print.preview_dpi); !st)
     return fail(ErrorCode::kIo, st.error().message);
   return {};
 }

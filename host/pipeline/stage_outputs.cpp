@@ -40,7 +40,7 @@ Status stage_outputs(PipelineState& ps) {
     if (ps.cancel.cancelled()) return fail(ErrorCode::kCancelled, "job cancelled");
     auto img = geometry::render_piece_image(*ps.renderer, i, ps.job.print.preview_dpi);
     std::string name = "pieces/" + file_stem(ps.pattern.pieces[static_cast<size_t>(i)].name) + ".png";
-    if (auto st = rip::write_png(out / name, img.image); !st) return fail(ErrorCode::kIo, st.error().message);
+    if (auto st = rip::write_png(out / name, img.image, rip::PngChannels::kRgba, ps.job.print.preview_dpi); !st) return fail(ErrorCode::kIo, st.error().message);
     pieces.push_back(name);
   }
   ps.report["files"] = {{"marker", "marker.png"}, {"pieces", pieces}};
@@ -48,6 +48,7 @@ Status stage_outputs(PipelineState& ps) {
   // Cut contours exactly where the pieces were printed on the roll.
   auto cut = geometry::make_cut_job(ps.pattern, ps.finishing, ps.roll);
   if (!cut) return fail(ErrorCode::kPipeline, "cut files: " + cut.error().message);
+  cut->roll_axis = ps.job.finishing.cutter_roll_axis == "y" ? geometry::CutterRollAxis::kY : geometry::CutterRollAxis::kX;
   if (auto st = geometry::write_dxf_aama(*cut, out / "cut.dxf"); !st) return fail(ErrorCode::kIo, st.error().message);
   if (auto st = geometry::write_svg(*cut, out / "cut.svg"); !st) return fail(ErrorCode::kIo, st.error().message);
   ps.report["files"]["cut"] = {"cut.dxf", "cut.svg"};
