@@ -98,7 +98,9 @@ Status write_tiff(const std::filesystem::path& path, const ChannelImage8& image,
 
 Result<ChannelImage8> read_channels8(const std::filesystem::path& path) {
   const std::string name = path.string();
-  auto in = OIIO::ImageInput::open(name);
+  OIIO::ImageSpec raw_config;
+  raw_config.attribute("oiio:RawColor", 1);  // separated (CMYK) files: the ink samples, not RGB
+  auto in = OIIO::ImageInput::open(name, &raw_config);
   if (!in) return fail(ErrorCode::kImage, fmt::format("{}: cannot open image: {}", name, OIIO::geterror()));
   const OIIO::ImageSpec& spec = in->spec();
   if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0 ||

@@ -131,6 +131,9 @@ Result<FabricSummary> FabricCanvas::finish(const std::filesystem::path& tif, con
 
   OIIO::ImageSpec tspec(static_cast<int>(spec_.width_px), static_cast<int>(height), static_cast<int>(nch), OIIO::TypeDesc::UINT8);
   tspec.channelnames = spec_.inks;
+  // Every channel is an ink amount (min-is-black), none is alpha.
+  tspec.alpha_channel = -1;
+  tspec.attribute("tiff:PhotometricInterpretation", 1);
   tspec.attribute("compression", "zip");
   tspec.attribute("tiff:zipquality", 1);  // fast: rolls are long, drops compress well anyway
   tspec.attribute("XResolution", static_cast<float>(spec_.dpi_x));

@@ -79,11 +79,21 @@ std::string without_layer(const std::vector<std::pair<int, std::string>>& pairs,
   return out;
 }
 
+// CMYK files read as their ink samples, not converted to RGB.
+const OIIO::ImageSpec& raw_config() {
+  static const OIIO::ImageSpec config = [] {
+    OIIO::ImageSpec c;
+    c.attribute("oiio:RawColor", 1);
+    return c;
+  }();
+  return config;
+}
+
 struct Raster {
   OIIO::ImageBuf buf;
   int width = 0, height = 0, channels = 0;
   double dpi = 0;
-  explicit Raster(const fs::path& p) : buf(p.string()) {
+  explicit Raster(const fs::path& p) : buf(p.string(), 0, 0, nullptr, &raw_config()) {
     EXPECT_TRUE(buf.read(0, 0, true, OIIO::TypeDesc::FLOAT)) << p;
     width = buf.spec().width;
     height = buf.spec().height;
