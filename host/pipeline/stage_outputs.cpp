@@ -22,7 +22,9 @@ std::string file_stem(const std::string& name) {
   return out.empty() ? "piece" : out;
 }
 
+// Colour differences, null when nothing was sampled (no seam or allowance to measure).
 nlohmann::json stats_json(const geometry::DeltaEStats& s) {
+  if (s.samples == 0) return {{"samples", 0}, {"de00_mean", nullptr}, {"de00_p95", nullptr}, {"de00_max", nullptr}};
   return {{"samples", s.samples}, {"de00_mean", s.mean}, {"de00_p95", s.p95}, {"de00_max", s.max}};
 }
 
@@ -52,6 +54,21 @@ Status stage_outputs(PipelineState& ps) {
   if (auto st = geometry::write_dxf_aama(*cut, out / "cut.dxf"); !st) return fail(ErrorCode::kIo, st.error().message);
   if (auto st = geometry::write_svg(*cut, out / "cut.svg"); !st) return fail(ErrorCode::kIo, st.error().message);
   ps.report["files"]["cut"] = {"cut.dxf", "cut.svg"};
+
+  // Warnings a person should read: import notes, pieces no stitch joins, a mirrored print.
+  auto& warnings = ps.report["warnings"];
+  if (!warnings.is_array()) warnings = nlohmann::json::array();
+  for (const std::string& w : ps.pattern.warnings) warnings.push_back("pattern: " + w);
+  if (!ps.pattern.stitches.empty()) {
+    std::vector<bool> sewn(ps.pattern.pieces.size(), false);
+    for (const geometry::Stitch& s : ps.pattern.stitches)
+      for (int p : {s.a.piece, s.b.piece})
+        if (p >= 0 && static_cast<size_t>(p) < sewn.size()) sewn[static_cast<size_t>(p)] = true;
+    for (size_t i = 0; i < sewn.size(); ++i)
+      if (!sewn[i]) warnings.push_back("piece '" + ps.pattern.pieces[i].name + "' is joined to no other piece by a stitch");
+  }
+  if (ps.job.print.transfer == "sublimation")
+    warnings.push_back("print.transfer is sublimation: the printer lays the mirror image for transfer paper");
 
   if (!ps.pattern.stitches.empty()) {
     auto c = geometry::measure_continuity(ps.pattern, *ps.garment, ps.finishing, *ps.renderer, kContinuityDpi);
