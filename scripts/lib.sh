@@ -16,7 +16,7 @@ TP_PACKAGES=(
   libgtest-dev libgmock-dev libbenchmark-dev
   libumockdev-dev umockdev
   clang libclang-rt-14-dev
-  python3-ezdxf pngcheck librsvg2-bin libtiff-tools
+  python3-ezdxf python3-jsonschema pngcheck librsvg2-bin libtiff-tools
 )
 
 tp_log() { printf '\033[1m==> %s\033[0m\n' "$*" >&2; }

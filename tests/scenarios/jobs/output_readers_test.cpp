@@ -114,5 +114,54 @@ TEST_F(OutputReaders, TiffinfoSeesInkChannelsAtThePrintResolutionWithoutAlpha) {
   EXPECT_NE(r.output.find("cyan,magenta,yellow,black"), std::string::npos) << r.output;
 }
 
+// Validates a report against docs/schema/report.schema.json with python3-jsonschema.
+CommandResult validate_report(const fs::path& report) {
+  return run_command({"/usr/bin/python3", "-c",
+                      "import json, sys, jsonschema\n"
+                      "schema = json.load(open(sys.argv[2]))\n"
+                      "jsonschema.Draft202012Validator.check_schema(schema)\n"
+                      "errors = list(jsonschema.Draft202012Validator(schema).iter_errors(json.load(open(sys.argv[1]))))\n"
+                      "for e in errors: print('/'.join(map(str, e.absolute_path)) + ': ' + e.message)\n"
+                      "sys.exit(1 if errors else 0)\n",
+                      report.string(), (source_dir() / "docs/schema/report.schema.json").string()});
+}
+
+TEST_F(OutputReaders, TheReportMatchesItsSchema) {
+  ASSERT_EQ(run_command({"/usr/bin/python3", "-c", "import jsonschema"}).exit_code, 0)
+      << "python3-jsonschema missing (scripts/lib.sh TP_PACKAGES installs it)";
+  auto done = validate_report(*out_ / "report.json");
+  EXPECT_EQ(done.exit_code, 0) << done.output;
+  std::ifstream in(*out_ / "report.json");
+  const auto rep = nlohmann::json::parse(in);
+  EXPECT_EQ(rep["schema"], "tp-report/1");
+  EXPECT_TRUE(rep["warnings"].is_array());
+  for (const char* ink : {"cyan", "magenta", "yellow", "black"}) {
+    EXPECT_GT(rep["ink"]["ml"][ink].get<double>(), 0) << ink;
+    EXPECT_GT(rep["ink"]["drops"][ink].get<std::uint64_t>(), 0u) << ink;
+  }
+  const double est = rep["estimate"]["print_time_s"], meas = rep["measured"]["print_time_s"];
+  std::printf("print time estimated %.2f s, measured %.2f s\n", est, meas);
+  RecordProperty("print_time_estimated_s", std::to_string(est));
+  RecordProperty("print_time_measured_s", std::to_string(meas));
+  EXPECT_GT(est, 0.5 * meas);
+  EXPECT_LT(est, 2 * meas);
+  EXPECT_NEAR(rep["measured"]["fabric_length_mm"].get<double>(), rep["estimate"]["fabric_length_mm"].get<double>(), 1);
+
+  // A job that fails in its design stage still writes a report of the same schema.
+  const fs::path job = scratch_dir("report_failed") / "job";
+  fs::copy(source_dir() / "examples/shirt-front-flat", job, fs::copy_options::recursive);
+  std::ofstream(job / "motif.png") << "not an image";
+  std::ifstream jin(job / "job.json");
+  auto j = nlohmann::json::parse(jin);
+  j["design"]["layers"][1].erase("procedural");
+  j["design"]["layers"][1]["image"] = "motif.png";
+  std::ofstream(job / "job.json") << j.dump(2);
+  const fs::path out = job.parent_path() / "out";
+  auto r = run_command({(bin_dir() / "printctl").string(), "run", job.string(), "--out", out.string()});
+  EXPECT_NE(r.exit_code, 0);
+  auto failed = validate_report(out / "report.json");
+  EXPECT_EQ(failed.exit_code, 0) << failed.output;
+}
+
 }  // namespace
 }  // namespace tp::test
