@@ -120,7 +120,7 @@ TEST(MarkerPreview, RendersTheWholeMarkerSmall) {
   geometry::Marker m;
   m.width_mm = 1600;
   m.length_mm = 1000;
-  m.placements = {{0, 0, false, {100, 200}}};
+  m.placements = {{0, 0, false, {100, 300}}};  // face up: piece y 0..100 at roll y 300..200
   auto img = render_marker_preview(m, r, 50);
   ASSERT_TRUE(img) << img.error().what();
   EXPECT_EQ(img->width_px, 3150);
