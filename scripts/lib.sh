@@ -17,6 +17,7 @@ TP_PACKAGES=(
   libumockdev-dev umockdev
   python3
   clang libclang-rt-14-dev
+  python3-ezdxf python3-jsonschema pngcheck librsvg2-bin libtiff-tools
 )
 
 tp_log() { printf '\033[1m==> %s\033[0m\n' "$*" >&2; }

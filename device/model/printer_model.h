@@ -13,6 +13,18 @@ struct InkChannel {
   double head_offset_x_mm = 0;   ///< offset of this ink's nozzle row from the carriage origin
 };
 
+/// Where the carriage's nozzle column 0 lies, seen from the printed face with the marker's
+/// leading edge at the top (docs/roll-frame.md): over the left selvedge (roll x = 0, columns
+/// run with roll x) or over the right one (columns run against roll x).
+enum class CarriageOrigin { kLeft, kRight };
+
+/// "left" / "right".
+const char* to_string(CarriageOrigin origin);
+
+/// Linear drop volumes up to kDefaultLargestDrop_pl, one per drop level 1 .. 2^bits - 1.
+inline constexpr double kDefaultLargestDrop_pl = 12;
+std::vector<double> default_drop_volumes_pl(int bits_per_pixel);
+
 /// A printer model, as the host plans swaths for it and the simulator emulates it.
 struct PrinterModel {
   std::string name = "tp-sim-1600";
@@ -32,6 +44,9 @@ struct PrinterModel {
   double carriage_speed_mm_s = 1500;
   double feed_speed_mm_s = 200;
   std::uint16_t protocol_version = 1;
+  CarriageOrigin carriage_origin = CarriageOrigin::kLeft;
+  /// Volume of one drop at each level 1 .. 2^bits_per_pixel - 1, picolitres (ink use in the report).
+  std::vector<double> drop_volume_pl{4, 8, 12};
 };
 
 }  // namespace tp::device

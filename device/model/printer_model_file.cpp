@@ -1,6 +1,7 @@
 // device/model/printer_model_file.cpp: parser, writer and validation of printer model files.
 #include "device/model/printer_model_file.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -68,6 +69,21 @@ std::string fmt_double(double v) {
 
 }  // namespace
 
+const char* to_string(CarriageOrigin origin) {
+  switch (origin) {
+    case CarriageOrigin::kLeft: return "left";
+    case CarriageOrigin::kRight: return "right";
+  }
+  return "left";
+}
+
+std::vector<double> default_drop_volumes_pl(int bits_per_pixel) {
+  const int levels = (1 << std::clamp(bits_per_pixel, 1, 8)) - 1;
+  std::vector<double> v;
+  for (int k = 1; k <= levels; ++k) v.push_back(kDefaultLargestDrop_pl * k / levels);
+  return v;
+}
+
 Status validate_printer_model(const PrinterModel& m) {
   auto bad = [&](const std::string& field, const std::string& why) {
     return fail(ErrorCode::kInvalidArgument, "printer model '" + m.name + "': " + field + ": " + why);
@@ -93,6 +109,12 @@ Status validate_printer_model(const PrinterModel& m) {
   if (!(m.carriage_speed_mm_s > 0 && m.carriage_speed_mm_s <= 20000)) return bad("carriage_speed_mm_s", "must be in (0, 20000]");
   if (!(m.feed_speed_mm_s > 0 && m.feed_speed_mm_s <= 20000)) return bad("feed_speed_mm_s", "must be in (0, 20000]");
   if (m.protocol_version < 1) return bad("protocol_version", "must be at least 1");
+  if (m.drop_volume_pl.size() != (std::size_t{1} << m.bits_per_pixel) - 1)
+    return bad("drop_volume_pl", "needs one volume per drop level (" + std::to_string((1 << m.bits_per_pixel) - 1) +
+                                     " for " + std::to_string(m.bits_per_pixel) + " bits per pixel), got " +
+                                     std::to_string(m.drop_volume_pl.size()));
+  for (double v : m.drop_volume_pl)
+    if (!(v > 0 && v <= 1000)) return bad("drop_volume_pl", "volumes must be in (0, 1000] pL");
   return {};
 }
 
@@ -162,6 +184,21 @@ Result<PrinterModel> parse_printer_model(std::string_view text, std::string_view
     } else if (key == "carriage_speed_mm_s" || key == "feed_speed_mm_s") {
       if (!parse_double(val, 1e-3, 20000, d)) return bad("a number in (0, 20000]");
       (key == "carriage_speed_mm_s" ? m.carriage_speed_mm_s : m.feed_speed_mm_s) = d;
+    } else if (key == "carriage_origin") {
+      if (val == "left") m.carriage_origin = CarriageOrigin::kLeft;
+      else if (val == "right") m.carriage_origin = CarriageOrigin::kRight;
+      else return bad("'left' or 'right'");
+    } else if (key == "drop_volume_pl") {
+      // "drop_volume_pl = 4 8 12": picolitres per drop level, smallest first.
+      m.drop_volume_pl.clear();
+      for (std::string_view rest = val; !rest.empty();) {
+        const std::size_t sp = rest.find_first_of(" \t");
+        if (!parse_double(rest.substr(0, sp), 1e-6, 1000, d) || m.drop_volume_pl.size() >= 255)
+          return bad("1..255 volumes in (0, 1000] pL separated by spaces");
+        m.drop_volume_pl.push_back(d);
+        rest = sp == std::string_view::npos ? std::string_view{} : trim(rest.substr(sp));
+      }
+      if (m.drop_volume_pl.empty()) return bad("1..255 volumes in (0, 1000] pL separated by spaces");
     } else if (key == "protocol_version") {
       if (!parse_int(val, 1, 65535, i)) return bad("an integer in 1..65535");
       m.protocol_version = static_cast<std::uint16_t>(i);
@@ -184,6 +221,7 @@ Result<PrinterModel> parse_printer_model(std::string_view text, std::string_view
   for (const char* required : {"name", "dpi_x", "dpi_y"})
     if (!seen.count(required)) return fail(ErrorCode::kParse, src + ": required key '" + required + "' missing");
   if (m.inks.empty()) return fail(ErrorCode::kParse, src + ": no 'ink' lines; a printer needs at least one ink");
+  if (!seen.count("drop_volume_pl")) m.drop_volume_pl = default_drop_volumes_pl(m.bits_per_pixel);
   if (auto s = validate_printer_model(m); !s) return fail(ErrorCode::kParse, src + ": " + s.error().message);
   return m;
 }
@@ -219,6 +257,10 @@ std::string format_printer_model(const PrinterModel& m) {
   o << "carriage_speed_mm_s = " << fmt_double(m.carriage_speed_mm_s) << "\n";
   o << "feed_speed_mm_s = " << fmt_double(m.feed_speed_mm_s) << "\n";
   o << "protocol_version = " << m.protocol_version << "\n";
+  o << "carriage_origin = " << to_string(m.carriage_origin) << "\n";
+  o << "drop_volume_pl =";
+  for (double v : m.drop_volume_pl) o << " " << fmt_double(v);
+  o << "\n";
   for (const auto& ink : m.inks) o << "ink = " << ink.name << " " << fmt_double(ink.head_offset_x_mm) << "\n";
   return o.str();
 }

@@ -45,6 +45,12 @@ Polygon notched_outline(const Polygon& cut, const std::vector<NotchCut>& notches
 
 }  // namespace
 
+Affine2 roll_to_cutter(const CutJob& job) {
+  // Both maps turn the printed face's y-down view into a y-up drawing without mirroring it.
+  if (job.roll_axis == CutterRollAxis::kX) return Affine2{0, 1, 0, 1, 0, 0};
+  return Affine2{1, 0, 0, 0, -1, job.marker_length_mm};
+}
+
 std::vector<Vec2> transformed(const std::vector<Vec2>& pts, const Affine2& m) {
   std::vector<Vec2> out;
   out.reserve(pts.size());
@@ -57,6 +63,7 @@ Result<CutJob> make_cut_job(const Pattern& pattern, const Finishing& finishing, 
   CutJob job;
   job.job_name = finishing.job_name;
   job.pattern_name = pattern.name;
+  job.size = pattern.size;
   job.fabric_width_mm = marker.width_mm;
   job.marker_length_mm = marker.length_mm;
   std::map<int, int> copies;

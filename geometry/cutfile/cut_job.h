@@ -34,14 +34,27 @@ struct PieceCut {
   std::vector<std::string> annotation;             ///< "Piece Name: front", "Size: M", "Quantity: 1", ...
 };
 
+/// Which cut-file axis runs along the roll (a cutter setting; docs/roll-frame.md). Both keep the
+/// printed face up, so the pieces read as printed.
+enum class CutterRollAxis {
+  kX,  ///< DXF X = roll y (from the leading edge), DXF Y = roll x (from the left selvedge)
+  kY,  ///< DXF X = roll x, DXF Y = marker length - roll y (origin at the trailing edge's left corner)
+};
+
 /// A job's cut contours on one marker.
 struct CutJob {
   std::string job_name;
   std::string pattern_name;
+  std::string size;                ///< the pattern's size ("M"), empty if none
   double fabric_width_mm = 0;
   double marker_length_mm = 0;
+  CutterRollAxis roll_axis = CutterRollAxis::kX;
   std::vector<PieceCut> pieces;  ///< in marker placement order
 };
+
+/// The roll frame (mm, y down the roll, seen from the printed face) to the cutting table's frame
+/// of `job.roll_axis` (mm, y up, seen from above the printed face).
+[[nodiscard]] Affine2 roll_to_cutter(const CutJob& job);
 
 /// Assembles the cut contours of every placement of `marker`: cut line from the resolved
 /// allowance (the outline the renderer prints), notches cut into it, grain, drill holes, sew line,

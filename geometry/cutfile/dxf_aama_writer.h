@@ -9,13 +9,16 @@
 
 namespace tp::geometry {
 
-/// DXF R12 text in mm ($INSUNITS 4, "Units: METRIC"): one BLOCK per placed piece holding, in
-/// piece mm, the cut line (layer 1, V/U notches cut in, closed POLYLINE), notch slits (layer 4,
-/// LINE from the cut line inwards), grain line (7, LINE), internal lines (8), drill holes (13,
-/// POINT, or CIRCLE when punched), sew line (14, closed POLYLINE), label strokes (15) and the
-/// AAMA annotation text ("Piece Name:", "Size:", "Quantity:"...) on layer 1; then one INSERT
-/// per piece with its placement (mirror as x scale -1, rotation, offset), so the file opens
-/// positioned as printed on the roll. Block names are the piece names made DXF-safe.
+/// DXF R12 (AC1009) text in mm: no R2000 header variables; units as AAMA "Units: METRIC" text,
+/// $EXTMIN/$EXTMAX the roll; LTYPE (CONTINUOUS), LAYER and STYLE tables. One BLOCK per placed
+/// piece holding, in piece mm, the cut line (layer 1, V/U notches cut in, closed POLYLINE),
+/// notch slits (layer 4, LINE from the cut line inwards), grain line (7, LINE), internal lines
+/// (8), drill holes (13, POINT), sew line (14, closed POLYLINE), label strokes (15) and the AAMA
+/// annotation text ("Piece Name:", "Size:", "Quantity:"...) on layer 1, sized to stay inside the
+/// piece; then the Style System Text (TEXT on layer 1 in the roll's leading-edge corner) and one
+/// INSERT per piece placing it in the cutter's frame (roll_to_cutter: x scale -1 where the
+/// placement mirrors, rotation, position), so the file opens as the pieces lie on the printed
+/// roll, face up. Block names are the piece names made DXF-safe.
 std::string dxf_aama_text(const CutJob& job);
 
 /// Writes dxf_aama_text to `path`; kIo naming the file on failure.

@@ -9,10 +9,12 @@
 
 namespace tp::geometry {
 
-/// SVG 1.1 in mm (viewBox in mm, 1 user unit = 1 mm): the roll as wide as the fabric and as long
-/// as the marker (x across, y down the roll in feed direction), one group per placed piece with
-/// its cut line (class "cut"), notches ("notch"), grain line ("grain"), drill holes ("drill"),
-/// sew line ("sew"), internal lines ("internal"), label strokes ("mark") and its name.
+/// SVG 1.1 in mm (viewBox in mm, 1 user unit = 1 mm) in the roll frame seen from the printed face
+/// (x across from the left selvedge, y down the roll from the leading edge; docs/roll-frame.md).
+/// One group per cutter layer, ids a cutter's import selects by (also Inkscape layers):
+/// `roll` (the roll rectangle), `cut` (each piece's cut line, id "cut-<piece>"), `sew`, `notch`,
+/// `drill`, `grain`, `internal` and `annotation` (label strokes and piece names); every element
+/// names its piece in `data-piece`.
 std::string svg_text(const CutJob& job);
 
 /// Writes svg_text to `path`; kIo naming the file on failure.

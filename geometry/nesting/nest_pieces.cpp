@@ -23,6 +23,9 @@ constexpr double kPlanningUtilisation = 0.8;
 // Swapping the axes maps one frame to the other (it is its own inverse).
 Vec2 swap_xy(Vec2 v) { return {v.y, v.x}; }
 
+// Piece y up to roll y down (PiecePlacement::piece_to_roll starts with it).
+Vec2 face_up(Vec2 v) { return {v.x, -v.y}; }
+
 double normalise_deg(double d) {
   d = std::fmod(d, 360.0);
   if (d < 0) d += 360.0;
@@ -60,7 +63,7 @@ struct ItemOrigin {
 void add_strip_items(const NestItem& it, size_t index, std::vector<StripItem>& out, std::vector<ItemOrigin>& origin) {
   Polygon shape;
   shape.reserve(it.outline_mm.size());
-  for (Vec2 v : it.outline_mm) shape.push_back(swap_xy(v));
+  for (Vec2 v : it.outline_mm) shape.push_back(swap_xy(face_up(v)));
   auto make = [&](std::vector<bool> mirrors, int demand) {
     StripItem s;
     s.id = static_cast<int>(out.size());
@@ -87,7 +90,8 @@ void add_strip_items(const NestItem& it, size_t index, std::vector<StripItem>& o
 }  // namespace
 
 std::vector<double> grain_rotations_deg(Vec2 grain, PieceRotation rule, bool mirrored) {
-  const Vec2 g = mirrored ? Vec2{-grain.x, grain.y} : grain;
+  const Vec2 f = face_up(grain);
+  const Vec2 g = mirrored ? Vec2{-f.x, f.y} : f;
   const double base = normalise_deg(90.0 - std::atan2(g.y, g.x) * 180.0 / kPi);
   switch (rule) {
     case PieceRotation::kOneWay: return {base};

@@ -75,8 +75,8 @@ struct NestStats {
 [[nodiscard]] Result<std::vector<Marker>> nest_pieces(const std::vector<NestItem>& items, const NestOptions& options,
                                                       const CancelToken& cancel = {}, NestStats* stats = nullptr);
 
-/// Roll rotations (degrees, in [0, 360)) that lay `grain` along +y under a rule; `mirrored` for
-/// the mirrored piece (x -> -x applied first).
+/// Roll rotations (degrees, in [0, 360)) that lay `grain` (piece-local, y up) along roll +y under
+/// a rule, after the face-up flip y -> -y and, for the `mirrored` piece, x -> -x.
 [[nodiscard]] std::vector<double> grain_rotations_deg(Vec2 grain, PieceRotation rule, bool mirrored);
 
 }  // namespace tp::geometry

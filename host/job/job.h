@@ -86,6 +86,7 @@ struct FinishingSpec {
   std::string corner_style = "mitre";                 ///< "mitre", "square", "mirror"
   bool notches = true;
   std::string labels = "inside";                      ///< label and grain arrow: "inside", "separate", "none"
+  std::string cutter_roll_axis = "x";                 ///< cut-file axis along the roll: "x" or "y"
 };
 
 struct DefectZone {
@@ -120,6 +121,7 @@ struct PrintSpec {
   double ink_limit_pct = 280;
   bool separations_tiff = false;
   int preview_dpi = 50;
+  std::string transfer = "direct";                    ///< "direct" or "sublimation" (printed mirrored)
 };
 
 /// A validated job.

@@ -155,7 +155,8 @@ void read_layer(FieldReader l, const JobPackage* pkg, DesignLayerSpec& s) {
 }
 
 void read_finishing(FieldReader f, FinishingSpec& s) {
-  f.reject_unknown({"seam_allowance", "hem_allowance", "edges", "corner_style", "notches", "labels"});
+  f.reject_unknown({"seam_allowance", "hem_allowance", "edges", "corner_style", "notches", "labels", "cutter_roll_axis"});
+  if (auto v = f.choice("cutter_roll_axis", false, {"x", "y"})) s.cutter_roll_axis = *v;
   if (auto v = f.length_mm("seam_allowance", false, 0, 100)) s.seam_allowance_mm = *v;
   if (auto v = f.length_mm("hem_allowance", false, 0, 200)) s.hem_allowance_mm = *v;
   if (auto v = f.choice("corner_style", false, {"mitre", "square", "mirror"})) s.corner_style = *v;
@@ -204,7 +205,8 @@ void read_marker(FieldReader m, MarkerSpec& s) {
 
 void read_print(FieldReader p, const JobPackage* pkg, PrintSpec& s) {
   p.reject_unknown({"printer", "printer_model", "dpi", "passes", "bidirectional", "screen", "levels", "icc_profile",
-                    "ink_limit_pct", "separations_tiff", "preview_dpi"});
+                    "ink_limit_pct", "separations_tiff", "preview_dpi", "transfer"});
+  if (auto v = p.choice("transfer", false, {"direct", "sublimation"})) s.transfer = *v;
   if (auto v = p.choice("printer", false, {"sim", "usb"})) s.printer = *v;
   read_asset(p, "printer_model", false, pkg, s.printer_model);
   if (auto v = p.integer("dpi", false, 25, 2400)) s.dpi = *v;

@@ -64,7 +64,9 @@ Status run_job(const Job& job, const RunOptions& options, const geometry::Cancel
   fs::create_directories(options.out_dir, ec);
   if (ec) return fail(ErrorCode::kIo, options.out_dir.string() + ": " + ec.message());
 
-  nlohmann::json report = {{"job", job.name}, {"job_id", options.job_id}, {"started", utc_now()}};
+  // docs/report.md; "warnings" collects what a person should look at even when the job is done.
+  nlohmann::json report = {{"schema", "tp-report/1"}, {"job", job.name}, {"job_id", options.job_id},
+                            {"started", utc_now()}, {"warnings", nlohmann::json::array()}};
   internal::StageTracker tracker(options, cancel, report);
   internal::PipelineState ps{job, options, cancel, report};
   auto t0 = std::chrono::steady_clock::now();

@@ -96,7 +96,9 @@ Status stage_marker(PipelineState& ps) {
 
   auto preview = rip::render_marker_preview(ps.roll, *ps.renderer, ps.job.print.preview_dpi);
   if (!preview) return fail(ErrorCode::kPipeline, "marker.png: " + preview.error().message);
-  if (auto st = write_png_checked(ps.options.out_dir / "marker.png", *preview, rip::PngChannels::kRgbOverWhite); !st)
+  if (auto st = write_png_checked(ps.options.out_dir / "marker.png", *preview, rip::PngChannels::kRgbOverWhite,
+                                  ps.job.print.preview_dpi);
+      !st)
     return st;
   return {};
 }

@@ -24,7 +24,9 @@ std::string file_stem(const std::string& name) {
   return out.empty() ? "piece" : out;
 }
 
+// Colour differences, null when nothing was sampled (no seam or allowance to measure).
 nlohmann::json stats_json(const geometry::DeltaEStats& s) {
+  if (s.samples == 0) return {{"samples", 0}, {"de00_mean", nullptr}, {"de00_p95", nullptr}, {"de00_max", nullptr}};
   return {{"samples", s.samples}, {"de00_mean", s.mean}, {"de00_p95", s.p95}, {"de00_max", s.max}};
 }
 
@@ -42,7 +44,8 @@ Status stage_outputs(PipelineState& ps) {
     if (ps.cancel.cancelled()) return fail(ErrorCode::kCancelled, "job cancelled");
     auto img = geometry::render_piece_image(*ps.renderer, i, ps.job.print.preview_dpi);
     std::string name = "pieces/" + file_stem(ps.pattern.pieces[static_cast<size_t>(i)].name) + ".png";
-    if (auto st = write_png_checked(out / name, img.image); !st) return st;
+    if (auto st = write_png_checked(out / name, img.image, rip::PngChannels::kRgba, ps.job.print.preview_dpi); !st)
+      return st;
     pieces.push_back(name);
   }
   ps.report["files"] = {{"marker", "marker.png"}, {"pieces", pieces}};
@@ -50,9 +53,25 @@ Status stage_outputs(PipelineState& ps) {
   // Cut contours exactly where the pieces were printed on the roll.
   auto cut = geometry::make_cut_job(ps.pattern, ps.finishing, ps.roll);
   if (!cut) return fail(ErrorCode::kPipeline, "cut files: " + cut.error().message);
+  cut->roll_axis = ps.job.finishing.cutter_roll_axis == "y" ? geometry::CutterRollAxis::kY : geometry::CutterRollAxis::kX;
   if (auto st = write_file_atomic(out / "cut.dxf", geometry::dxf_aama_text(*cut)); !st) return st;
   if (auto st = write_file_atomic(out / "cut.svg", geometry::svg_text(*cut)); !st) return st;
   ps.report["files"]["cut"] = {"cut.dxf", "cut.svg"};
+
+  // Warnings a person should read: import notes, pieces no stitch joins, a mirrored print.
+  auto& warnings = ps.report["warnings"];
+  if (!warnings.is_array()) warnings = nlohmann::json::array();
+  for (const std::string& w : ps.pattern.warnings) warnings.push_back("pattern: " + w);
+  if (!ps.pattern.stitches.empty()) {
+    std::vector<bool> sewn(ps.pattern.pieces.size(), false);
+    for (const geometry::Stitch& s : ps.pattern.stitches)
+      for (int p : {s.a.piece, s.b.piece})
+        if (p >= 0 && static_cast<size_t>(p) < sewn.size()) sewn[static_cast<size_t>(p)] = true;
+    for (size_t i = 0; i < sewn.size(); ++i)
+      if (!sewn[i]) warnings.push_back("piece '" + ps.pattern.pieces[i].name + "' is joined to no other piece by a stitch");
+  }
+  if (ps.job.print.transfer == "sublimation")
+    warnings.push_back("print.transfer is sublimation: the printer lays the mirror image for transfer paper");
 
   if (!ps.pattern.stitches.empty()) {
     auto c = geometry::measure_continuity(ps.pattern, *ps.garment, ps.finishing, *ps.renderer, kContinuityDpi);

@@ -3,7 +3,9 @@
 // marks at notch positions; every printed swath becomes the job's resume checkpoint, and the
 // session decides where a resumed job goes on from what the printer holds.
 #include <algorithm>
+#include <cmath>
 
+#include "device/firmware/print_timing.h"
 #include "host/pipeline/printer_model.h"
 #include "host/pipeline/internal/pipeline_state.h"
 #include "host/pipeline/internal/plan_steps.h"
@@ -26,6 +28,7 @@ rip::RipSettings rip_settings(const PipelineState& ps) {
   s.ink_limit_percent = p.ink_limit_pct;
   s.first_swath_index = static_cast<std::uint32_t>(std::max<std::int64_t>(0, ps.options.resume_after_swath + 1));
   if (p.separations_tiff) s.separations.screened_tiff = ps.options.out_dir / "separations.tif";
+  s.mirror_print = p.transfer == "sublimation";
   return s;
 }
 
@@ -96,6 +99,38 @@ nlohmann::json rip_json(const rip::RipStats& st) {
           {"seconds", st.wall_s}};
 }
 
+// Print time and swath count before printing, from the marker and the printer model: the pass
+// plan advances the fabric nozzles/passes rows per swath (plus passes - 1 swaths to enter and
+// leave the head), each swath crosses the marker's width, each feed moves one advance.
+nlohmann::json print_estimate(const PipelineState& ps, const device::PrinterModel& model) {
+  const double rows = std::ceil(ps.roll.length_mm * model.dpi_y / 25.4);
+  const int passes = std::max(1, ps.job.print.passes);
+  const double advance_rows = std::max(1.0, static_cast<double>(model.nozzles_per_ink) * model.nozzle_pitch_rows / passes);
+  const double swaths = std::ceil(rows / advance_rows) + passes - 1;
+  device::SwathHeader h;
+  h.width_px = static_cast<std::uint32_t>(std::lround(ps.roll.width_mm * model.dpi_x / 25.4));
+  const auto feed_um = static_cast<std::int64_t>(std::llround(advance_rows * 25.4e3 / model.dpi_y));
+  const double seconds = swaths * (device::pass_time_s(model, h) + device::feed_time_s(model, feed_um));
+  return {{"print_time_s", seconds}, {"fabric_length_mm", ps.roll.length_mm}, {"swaths", static_cast<std::int64_t>(swaths)}};
+}
+
+// Drops and ink volume per named channel from the RIP's per-level drop counts.
+nlohmann::json ink_json(const rip::RipStats& st, const device::PrinterModel& model) {
+  nlohmann::json drops = nlohmann::json::object(), ml = nlohmann::json::object();
+  for (size_t c = 0; c < st.drops.size() && c < model.inks.size(); ++c) {
+    std::uint64_t n = 0;
+    double pl = 0;
+    for (size_t level = 1; level < st.drops[c].size(); ++level) {
+      n += st.drops[c][level];
+      const double v = level - 1 < model.drop_volume_pl.size() ? model.drop_volume_pl[level - 1] : 0;
+      pl += static_cast<double>(st.drops[c][level]) * v;
+    }
+    drops[model.inks[c].name] = n;
+    ml[model.inks[c].name] = pl * 1e-9;  // 1 pL = 1e-9 ml
+  }
+  return {{"drops", drops}, {"ml", ml}};
+}
+
 }  // namespace
 
 Status stage_print(PipelineState& ps) {
@@ -105,6 +140,7 @@ Status stage_print(PipelineState& ps) {
   rip::RipSettings settings = rip_settings(ps);
   auto swath_plan = SwathPlan::open(ps, *model, settings.first_swath_index);
   if (!swath_plan) return fail(swath_plan.error());
+  ps.report["estimate"] = print_estimate(ps, *model);
 
   // Without a printer ("none") the RIP still runs in full; its swaths are counted and dropped.
   std::unique_ptr<PrintSession> session;
@@ -154,6 +190,8 @@ Status stage_print(PipelineState& ps) {
   }
   ps.report["rip"] = rip_json(*stats);
   if (auto st = swath_plan->finish(stats->swaths); !st) return st;
+  ps.report["ink"] = ink_json(*stats, *model);
+  ps.report["measured"] = {{"print_time_s", nullptr}, {"fabric_length_mm", nullptr}, {"swaths", stats->swaths}};
 
   nlohmann::json print = {{"printer", printer}, {"swaths_total", stats->swaths}, {"swaths_sent", stats->swaths_sent},
                           {"swaths_acked", session ? acked : 0u}};
@@ -182,6 +220,8 @@ Status stage_print(PipelineState& ps) {
       cues.push_back({{"kind", std::string(device::to_string(c.kind))}, {"position_um", c.position_um},
                       {"fired", c.fired}, {"fired_at_um", c.fired_at_um}});
     print["cues"] = cues;
+    ps.report["measured"]["print_time_s"] = print["print_time_s"];
+    ps.report["measured"]["fabric_length_mm"] = static_cast<double>(result->report.feed_travel_um) / 1000.0;
   }
   ps.report["print"] = print;
   ps.report["swaths_sent"] = print["swaths_sent"];

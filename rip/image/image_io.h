@@ -40,10 +40,12 @@ enum class PngChannels {
   kRgbOverWhite,  ///< composited over white fabric, no alpha channel
 };
 
-/// Writes an 8-bit sRGB PNG. Fails (kIo) naming the file when it cannot be created or written, and
+/// Writes an 8-bit sRGB PNG with a pHYs chunk: `dpi` pixels per inch each way (stored per metre),
+/// or, for images with no physical size (dpi 0: renders, previews), square pixels of unknown
+/// size. Fails (kIo) naming the file when it cannot be created or written, and
 /// (kInvalidArgument) when the image's pixel count does not match its dimensions.
 [[nodiscard]] Status write_png(const std::filesystem::path& path, const geometry::ImageRgba8& image,
-                               PngChannels channels = PngChannels::kRgba);
+                               PngChannels channels = PngChannels::kRgba, double dpi = 0);
 
 /// Writes a baseline 8-bit sRGB JPEG at `quality` (1..100), composited over white fabric.
 /// Fails (kIo) naming the file, (kInvalidArgument) like write_png.

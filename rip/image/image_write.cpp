@@ -95,11 +95,17 @@ Status write_jpeg(const std::filesystem::path& path, const geometry::ImageRgba8&
   return write_whole(path, spec, over_white(image).data());
 }
 
-Status write_png(const std::filesystem::path& path, const geometry::ImageRgba8& image, PngChannels channels) {
+Status write_png(const std::filesystem::path& path, const geometry::ImageRgba8& image, PngChannels channels,
+                 double dpi) {
   if (auto ok = check_size(path, image); !ok) return ok;
   const int nch = channels == PngChannels::kRgba ? 4 : 3;
   OIIO::ImageSpec spec(image.width_px, image.height_px, nch, OIIO::TypeDesc::UINT8);
   spec.attribute("oiio:ColorSpace", "sRGB");
+  // pHYs: OIIO converts inches to the chunk's pixels per metre; without a unit, only the aspect.
+  const float res = dpi > 0 ? static_cast<float>(dpi) : 1.0f;
+  spec.attribute("XResolution", res);
+  spec.attribute("YResolution", res);
+  if (dpi > 0) spec.attribute("ResolutionUnit", "inch");
   if (nch == 4) {
     // Our pixels carry straight alpha; without this OIIO would un-premultiply them once more.
     spec.attribute("oiio:UnassociatedAlpha", 1);
@@ -124,7 +130,9 @@ Status write_tiff(const std::filesystem::path& path, const ChannelImage8& image,
 
 Result<ChannelImage8> read_channels8(const std::filesystem::path& path) {
   const std::string name = path.string();
-  auto in = OIIO::ImageInput::open(name);
+  OIIO::ImageSpec raw_config;
+  raw_config.attribute("oiio:RawColor", 1);  // separated (CMYK) files: the ink samples, not RGB
+  auto in = OIIO::ImageInput::open(name, &raw_config);
   if (!in) return fail(ErrorCode::kImage, fmt::format("{}: cannot open image: {}", name, OIIO::geterror()));
   const OIIO::ImageSpec& spec = in->spec();
   if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0 ||

@@ -154,10 +154,27 @@ Result<RipStats> run_rip(const BandSource& source, const device::PrinterModel& p
   return stats;
 }
 
+geometry::Marker mirrored_across_width(const geometry::Marker& marker, double dpi_x) {
+  // About the raster's own width, so printer column c shows what column (width - 1 - c) would.
+  const double width_mm = std::ceil(marker.width_mm * dpi_x / 25.4) * 25.4 / dpi_x;
+  geometry::Marker out = marker;
+  for (geometry::PiecePlacement& pl : out.placements) {
+    // x -> W - x after translate * rotate(theta) * mirror: translate(W - ox, oy) * rotate(-theta) * !mirror.
+    pl.offset_mm.x = width_mm - pl.offset_mm.x;
+    pl.rotation_deg = -pl.rotation_deg;
+    pl.mirrored = !pl.mirrored;
+  }
+  return out;
+}
+
 Result<RipStats> rip_marker(const geometry::Marker& marker, const geometry::PieceRenderer& renderer,
                             const device::PrinterModel& printer, const RipSettings& settings, const SwathSink& sink,
                             const ProgressCallback& progress, const geometry::CancelToken& cancel) {
-  auto source = MarkerSource::create(marker, renderer, printer.dpi_x, printer.dpi_y);
+  // Printer column 0 is at roll x = 0 unless the carriage starts over the right selvedge; a
+  // sublimation transfer prints the mirror image. Either turns the rows round (docs/roll-frame.md).
+  const bool mirror = settings.mirror_print != (printer.carriage_origin == device::CarriageOrigin::kRight);
+  auto source = MarkerSource::create(mirror ? mirrored_across_width(marker, printer.dpi_x) : marker, renderer,
+                                     printer.dpi_x, printer.dpi_y);
   if (!source) return std::unexpected(source.error());
   return run_rip(**source, printer, settings, sink, progress, cancel);
 }

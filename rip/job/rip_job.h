@@ -50,6 +50,8 @@ struct RipSettings {
   /// Resume: swaths with a lower index are computed (identically) but not sent.
   std::uint32_t first_swath_index = 0;
   SeparationFiles separations;
+  /// Print the mirror image across the roll width (sublimation transfer paper, laid face down).
+  bool mirror_print = false;
 };
 
 /// Where a running job is.
@@ -97,7 +99,12 @@ struct RipStats {
                                        const ProgressCallback& progress = {},
                                        const geometry::CancelToken& cancel = {});
 
-/// run_rip over a marker rendered through `renderer` at the printer's resolution (MarkerSource).
+/// The marker mirrored across its width at `dpi_x` (x -> W - x, W the raster's width in mm): what
+/// printer column c must carry when columns run against roll x.
+[[nodiscard]] geometry::Marker mirrored_across_width(const geometry::Marker& marker, double dpi_x);
+
+/// run_rip over a marker rendered through `renderer` at the printer's resolution (MarkerSource),
+/// mirrored across the width when settings.mirror_print differs from a right carriage origin.
 [[nodiscard]] Result<RipStats> rip_marker(const geometry::Marker& marker, const geometry::PieceRenderer& renderer,
                                           const device::PrinterModel& printer, const RipSettings& settings,
                                           const SwathSink& sink, const ProgressCallback& progress = {},

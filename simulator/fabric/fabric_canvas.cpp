@@ -109,7 +109,9 @@ void FabricCanvas::lay(const device::SwathHeader& h, std::span<const std::uint8_
             ++summary_.clipped_pixels;
             continue;
           }
-          std::uint8_t& v = dst[static_cast<std::size_t>(x) * stride + c];
+          // Files hold the roll frame: column = roll x, whichever side the carriage starts.
+          const std::int64_t col = spec_.columns_reversed ? static_cast<std::int64_t>(spec_.width_px) - 1 - x : x;
+          std::uint8_t& v = dst[static_cast<std::size_t>(col) * stride + c];
           v = static_cast<std::uint8_t>(std::min(255u, v + level));
         }
       }
@@ -129,6 +131,9 @@ Result<FabricSummary> FabricCanvas::finish(const std::filesystem::path& tif, con
 
   OIIO::ImageSpec tspec(static_cast<int>(spec_.width_px), static_cast<int>(height), static_cast<int>(nch), OIIO::TypeDesc::UINT8);
   tspec.channelnames = spec_.inks;
+  // Every channel is an ink amount (min-is-black), none is alpha.
+  tspec.alpha_channel = -1;
+  tspec.attribute("tiff:PhotometricInterpretation", 1);
   tspec.attribute("compression", "zip");
   tspec.attribute("tiff:zipquality", 1);  // fast: rolls are long, drops compress well anyway
   tspec.attribute("XResolution", static_cast<float>(spec_.dpi_x));
@@ -146,6 +151,10 @@ Result<FabricSummary> FabricCanvas::finish(const std::filesystem::path& tif, con
   const std::uint64_t ph = (height + scale - 1) / scale;
   OIIO::ImageSpec pspec(static_cast<int>(pw), static_cast<int>(ph), 3, OIIO::TypeDesc::UINT8);
   pspec.attribute("png:compressionLevel", 3);
+  // pHYs at the preview's own resolution (the fabric's, divided by the downscale).
+  pspec.attribute("XResolution", static_cast<float>(spec_.dpi_x) / static_cast<float>(scale));
+  pspec.attribute("YResolution", static_cast<float>(spec_.dpi_y) / static_cast<float>(scale));
+  pspec.attribute("ResolutionUnit", "inch");
   auto pout = OIIO::ImageOutput::create(png.string());
   if (!pout || !pout->open(png.string(), pspec))
     return fail(ErrorCode::kOutput, png.string() + ": cannot write PNG: " + (pout ? pout->geterror() : OIIO::geterror()));

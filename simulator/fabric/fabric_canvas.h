@@ -27,6 +27,9 @@ struct FabricSpec {
   /// Rows above a swath's first row that later swaths may still reach (the head's nozzle span):
   /// only rows further up leave memory.
   std::int64_t reach_rows = 0;
+  /// Printer columns run against roll x (carriage origin over the right selvedge): the files show
+  /// column c at width_px - 1 - c, so they always show the printed face in the roll frame.
+  bool columns_reversed = false;
 };
 
 struct FabricSummary {

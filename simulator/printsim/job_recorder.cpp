@@ -122,6 +122,7 @@ void JobRecorder::job_started(const device::JobBeginMsg& job, bool resumed) {
   spec.dpi_y = m.dpi_y;
   spec.bits_per_pixel = m.bits_per_pixel;
   spec.reach_rows = static_cast<std::int64_t>(m.nozzles_per_ink) * m.nozzle_pitch_rows;
+  spec.columns_reversed = m.carriage_origin == device::CarriageOrigin::kRight;
   auto canvas = FabricCanvas::create(spec, dir_ / ".fabric.scratch");
   if (!canvas) {
     sim_log()->error("{}", canvas.error().what());

@@ -10,9 +10,9 @@
 
 namespace tp::host::internal {
 
-/// rip::write_png into a temporary file renamed over `path` on success. Fails (kIo) naming
+/// rip::write_png (with its resolution `dpi`, 0 for none) into a temporary file renamed over `path` on success. Fails (kIo) naming
 /// `path` and the system error (ENOSPC); no partial file is left under `path`.
 [[nodiscard]] Status write_png_checked(const std::filesystem::path& path, const geometry::ImageRgba8& image,
-                                       rip::PngChannels channels = rip::PngChannels::kRgba);
+                                       rip::PngChannels channels = rip::PngChannels::kRgba, double dpi = 0);
 
 }  // namespace tp::host::internal

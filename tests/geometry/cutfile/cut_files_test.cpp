@@ -56,10 +56,11 @@ TEST(CutJob, PlacesEveryPieceAsOnTheRoll) {
   ASSERT_TRUE(job) << job.error().what();
   ASSERT_EQ(job->pieces.size(), 2u);
   const PieceCut& b = job->pieces[1];
-  // The placement maps the piece frame to the roll: mirrored then turned half round.
+  // The placement maps the piece frame to the roll: turned face up (y -> -y), mirrored, then
+  // turned half round.
   const Vec2 p = b.piece_to_roll.apply({10, 20});
   EXPECT_NEAR(p.x, 900 + 10, 1e-9);
-  EXPECT_NEAR(p.y, 750 - 20, 1e-9);
+  EXPECT_NEAR(p.y, 750 + 20, 1e-9);
   // The cut line is the allowance outline the renderer prints.
   auto a = resolve_allowance(g.pattern, 1, f);
   ASSERT_TRUE(a);
@@ -131,10 +132,14 @@ TEST(DxfAama, InsertsCarryThePlacement) {
   auto job = make_cut_job(g.pattern, Finishing{}, two_pieces_marker());
   ASSERT_TRUE(job);
   const std::string text = dxf_aama_text(*job);
-  // The mirrored, half-turned piece: x scale -1, rotation 180, at (900, 750).
-  EXPECT_NE(text.find("INSERT\n8\n0\n2\ngore1\n10\n900.0000\n20\n750.0000\n30\n0.0000\n41\n-1.0000\n42\n1.0000\n50\n180.0000"),
+  // The mirrored, half-turned piece, in the cutter's frame (DXF X along the roll): roll (900, 750)
+  // is DXF (750, 900); face-up flip, mirror and half turn cancel, leaving the axis swap: an
+  // x scale of -1 and a rotation of 270 degrees.
+  EXPECT_NE(text.find("INSERT\n8\n0\n2\ngore1\n10\n750.0000\n20\n900.0000\n30\n0.0000\n41\n-1.0000\n42\n1.0000\n50\n270.0000"),
             std::string::npos);
-  EXPECT_NE(text.find("$INSUNITS\n70\n4"), std::string::npos);
+  // R12 has no $INSUNITS: the units are AAMA text.
+  EXPECT_EQ(text.find("$INSUNITS"), std::string::npos);
+  EXPECT_NE(text.find("\n1\nUnits: METRIC\n"), std::string::npos);
 }
 
 TEST(Svg, DrawsEachPieceInMillimetresOnTheRoll) {
@@ -143,9 +148,17 @@ TEST(Svg, DrawsEachPieceInMillimetresOnTheRoll) {
   ASSERT_TRUE(job);
   const std::string svg = svg_text(*job);
   EXPECT_NE(svg.find("width=\"1600.000mm\""), std::string::npos);
-  EXPECT_NE(svg.find("viewBox=\"0.000 0.000 1600.000 1200.000\""), std::string::npos);
-  EXPECT_NE(svg.find("<g id=\"gore0\">"), std::string::npos);
-  EXPECT_NE(svg.find("class=\"notch\""), std::string::npos);
+  // The view starts at the left selvedge; it grows along the roll to the pieces that overhang it.
+  EXPECT_NE(svg.find("viewBox=\"0.000 "), std::string::npos);
+  EXPECT_NE(svg.find("<rect x=\"0\" y=\"0\" width=\"1600.000\" height=\"1200.000\"/>"), std::string::npos);
+  // One group per cutter layer; the cut layer holds each piece's cut line and nothing else.
+  for (const char* layer : {"roll", "cut", "sew", "notch", "drill", "grain", "internal", "annotation"})
+    EXPECT_NE(svg.find(std::string("<g id=\"") + layer + "\" inkscape:groupmode=\"layer\""), std::string::npos) << layer;
+  const size_t cut_at = svg.find("<g id=\"cut\""), cut_end = svg.find("</g>", cut_at);
+  const std::string cut_layer = svg.substr(cut_at, cut_end - cut_at);
+  EXPECT_NE(cut_layer.find("id=\"cut-gore0\""), std::string::npos);
+  EXPECT_EQ(cut_layer.find("<text"), std::string::npos);
+  EXPECT_EQ(cut_layer.find("<rect"), std::string::npos);
   const auto dir = test::scratch_dir("cutfile_svg");
   ASSERT_TRUE(write_svg(*job, dir / "cut.svg"));
   ASSERT_TRUE(write_dxf_aama(*job, dir / "cut.dxf"));

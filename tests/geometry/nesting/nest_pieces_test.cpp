@@ -69,7 +69,10 @@ std::vector<test::Pts> marker_pieces(const std::vector<NestItem>& items, const M
     const NestItem* it = nullptr;
     for (const NestItem& c : items)
       if (c.piece == p.piece) it = &c;
-    out.push_back(test::transform_piece(pts(it->outline_mm), p.rotation_deg, p.mirrored, p.offset_mm.x, p.offset_mm.y));
+    // The face-up flip (piece y up, roll y down) comes before the placement's own transform.
+    test::Pts face_up = pts(it->outline_mm);
+    for (auto& q : face_up) q.second = -q.second;
+    out.push_back(test::transform_piece(face_up, p.rotation_deg, p.mirrored, p.offset_mm.x, p.offset_mm.y));
   }
   return out;
 }
@@ -87,10 +90,12 @@ void expect_legal(const std::vector<NestItem>& items, const NestOptions& o, cons
 }
 
 TEST(NestPieces, GrainRotationsLayTheGrainAlongTheRoll) {
-  EXPECT_EQ(grain_rotations_deg({0, 1}, PieceRotation::kGrainBothWays, false), (std::vector<double>{0, 180}));
+  // Piece y up becomes roll -y (the face-up flip): a grain drawn up needs a half turn.
+  EXPECT_EQ(grain_rotations_deg({0, 1}, PieceRotation::kGrainBothWays, false), (std::vector<double>{180, 0}));
+  EXPECT_EQ(grain_rotations_deg({0, -1}, PieceRotation::kOneWay, false), (std::vector<double>{0}));
   EXPECT_EQ(grain_rotations_deg({1, 0}, PieceRotation::kOneWay, false), (std::vector<double>{90}));
   EXPECT_EQ(grain_rotations_deg({1, 0}, PieceRotation::kOneWay, true), (std::vector<double>{270}));
-  EXPECT_EQ(grain_rotations_deg({0, 1}, PieceRotation::kQuarterTurns, false), (std::vector<double>{0, 90, 180, 270}));
+  EXPECT_EQ(grain_rotations_deg({0, 1}, PieceRotation::kQuarterTurns, false), (std::vector<double>{180, 270, 0, 90}));
   for (bool mirror : {false, true}) {
     for (double deg : grain_rotations_deg({3, 4}, PieceRotation::kOneWay, mirror)) {
       PiecePlacement p;

@@ -42,7 +42,8 @@ struct SmallJob {
   SmallJob() {
     marker.width_mm = 40;
     marker.length_mm = 30;
-    marker.placements = {PiecePlacement{0, 0, false, {2, 1}}, PiecePlacement{1, 90, false, {34, 2}},
+    // Offsets allow for the face-up flip (piece y up, roll y down).
+    marker.placements = {PiecePlacement{0, 0, false, {2, 10}}, PiecePlacement{1, 90, false, {28, 2}},
                          PiecePlacement{2, 30, true, {25, 20}}};
     printer.nozzles_per_ink = 64;
   }

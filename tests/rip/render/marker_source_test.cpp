@@ -41,7 +41,7 @@ TEST(MarkerSource, PiecesLandWhereThePlacementPutsThem) {
   geometry::Marker m;
   m.width_mm = 30;
   m.length_mm = 20;
-  m.placements = {{0, 0, false, {5, 7}}};
+  m.placements = {{0, 0, false, {5, 17}}};  // the face-up flip puts piece y 0..10 at roll y 17..7
   auto src = MarkerSource::create(m, r, 254, 254);
   ASSERT_TRUE(src) << src.error().what();
   EXPECT_EQ((*src)->width_px(), 300);
@@ -91,7 +91,7 @@ TEST(MarkerSource, OnlyPiecesCrossingARowRangeAreVisited) {
   geometry::Marker m;
   m.width_mm = 50;
   m.length_mm = 100;
-  for (int i = 0; i < 5; ++i) m.placements.push_back({0, 0, false, {20, 20.0 * i}});
+  for (int i = 0; i < 5; ++i) m.placements.push_back({0, 0, false, {20, 20.0 * i + 10}});  // y 20i..20i+10
   auto src = MarkerSource::create(m, r, 254, 254);
   ASSERT_TRUE(src);
   EXPECT_EQ((*src)->placements_crossing(0, 16), 1);
@@ -120,7 +120,7 @@ TEST(MarkerPreview, RendersTheWholeMarkerSmall) {
   geometry::Marker m;
   m.width_mm = 1600;
   m.length_mm = 1000;
-  m.placements = {{0, 0, false, {100, 200}}};
+  m.placements = {{0, 0, false, {100, 300}}};  // face up: piece y 0..100 at roll y 300..200
   auto img = render_marker_preview(m, r, 50);
   ASSERT_TRUE(img) << img.error().what();
   EXPECT_EQ(img->width_px, 3150);

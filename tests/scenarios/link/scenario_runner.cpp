@@ -62,7 +62,9 @@ json load(const fs::path& p) {
 }
 
 bool read_pixels(const fs::path& p, std::vector<std::uint8_t>& px, OIIO::ImageSpec& spec) {
-  auto in = OIIO::ImageInput::open(p.string());
+  OIIO::ImageSpec raw_config;
+  raw_config.attribute("oiio:RawColor", 1);  // CMYK files: the ink samples, not RGB
+  auto in = OIIO::ImageInput::open(p.string(), &raw_config);
   if (!in) return false;
   spec = in->spec();
   px.resize(static_cast<std::size_t>(spec.width) * spec.height * spec.nchannels);

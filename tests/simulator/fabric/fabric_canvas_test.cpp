@@ -42,7 +42,9 @@ std::vector<std::uint8_t> fill(const device::SwathHeader& h, int channel, unsign
 }
 
 std::vector<std::uint8_t> read_tiff(const std::filesystem::path& p, OIIO::ImageSpec& s) {
-  auto in = OIIO::ImageInput::open(p.string());
+  OIIO::ImageSpec raw_config;
+  raw_config.attribute("oiio:RawColor", 1);  // CMYK files: the ink samples, not RGB
+  auto in = OIIO::ImageInput::open(p.string(), &raw_config);
   EXPECT_TRUE(in);
   if (!in) return {};
   s = in->spec();
