@@ -61,6 +61,7 @@ Result<std::string> garment_inputs_hash(const Job& job) {
   if (auto st = add_optional_file(h, "pattern_file", g.pattern); !st) return fail(st.error());
   if (auto st = add_optional_file(h, "garment_file", g.garment_mesh); !st) return fail(st.error());
   if (auto st = add_optional_file(h, "body_file", g.body_mesh); !st) return fail(st.error());
+  if (auto st = add_optional_file(h, "stitches_file", g.stitches_file); !st) return fail(st.error());
   return h.hex();
 }
 

@@ -1,6 +1,8 @@
 // host/pipeline/plan_store.cpp: the job's plan directory and its index (see internal/plan_store.h).
 #include "host/pipeline/internal/plan_store.h"
 
+#include "host/common/atomic_file.h"
+
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -17,24 +19,6 @@ constexpr const char* kIndexName = "plan.json";
 constexpr const char* kFormat = "tp-plan/1";
 
 }  // namespace
-
-Status write_file_atomic(const fs::path& path, const std::string& bytes) {
-  const fs::path tmp = path.string() + ".tmp";
-  std::FILE* f = std::fopen(tmp.c_str(), "wb");
-  if (!f) return fail(ErrorCode::kIo, tmp.string() + ": cannot create: " + std::strerror(errno));
-  const bool wrote = std::fwrite(bytes.data(), 1, bytes.size(), f) == bytes.size();
-  const int write_errno = errno;
-  const bool closed = std::fclose(f) == 0;
-  if (!wrote || !closed) {
-    std::error_code ec;
-    fs::remove(tmp, ec);
-    return fail(ErrorCode::kIo, tmp.string() + ": cannot write: " + std::strerror(wrote ? errno : write_errno));
-  }
-  std::error_code ec;
-  fs::rename(tmp, path, ec);
-  if (ec) return fail(ErrorCode::kIo, path.string() + ": " + ec.message());
-  return {};
-}
 
 Result<std::string> PlanStore::read(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);
@@ -81,9 +65,9 @@ std::optional<fs::path> PlanStore::find(std::string_view step, std::string_view 
 
 Status PlanStore::save(std::string_view step, std::string_view inputs_hash, const std::string& file,
                        const std::string& bytes) {
-  if (auto st = write_file_atomic(dir_ / file, bytes); !st) return st;
+  if (auto st = write_file_atomic(dir_ / file, bytes, 0600); !st) return st;
   index_["steps"][std::string(step)] = {{"inputs", std::string(inputs_hash)}, {"file", file}, {"bytes", bytes.size()}};
-  return write_file_atomic(dir_ / kIndexName, index_.dump(2) + "\n");
+  return write_file_atomic(dir_ / kIndexName, index_.dump(2) + "\n", 0600);
 }
 
 }  // namespace tp::host::internal

@@ -39,7 +39,4 @@ class PlanStore {
   nlohmann::json index_;
 };
 
-/// Writes `bytes` to `path` through `<path>.tmp` and a rename, checking every write.
-[[nodiscard]] Status write_file_atomic(const std::filesystem::path& path, const std::string& bytes);
-
 }  // namespace tp::host::internal
