@@ -51,7 +51,10 @@ Status PrintSession::absorb_status() {
     const device::StatusMsg* now = link_->status();
     const bool lost_now = now && now->job_id != job_.job_id && now->last_job_id == job_.job_id &&
                           now->last_outcome == device::JobOutcome::kLost;
-    if (active_ && r->code == device::ErrorCode::kBadState && (lost_now || r->seq < reopen_seq_)) {
+    // A job_end the printer refuses because it already completed the job (re-attached as it finished).
+    const bool completed_now = now && now->job_id != job_.job_id && now->last_job_id == job_.job_id &&
+                               now->last_outcome == device::JobOutcome::kCompleted && ending_;
+    if (active_ && r->code == device::ErrorCode::kBadState && (lost_now || completed_now || r->seq < reopen_seq_)) {
       session_log()->info("printer refused {} sent before it lost the job: {}", device::to_string(r->refused), r->message);
     } else if (active_)
       return fail_job(ErrorCode::kPrinter, "printer refused " + std::string(device::to_string(r->refused)) + ": " +
