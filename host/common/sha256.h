@@ -1,7 +1,9 @@
-// host/common/sha256.h: SHA-256 (FIPS 180-4) for job content hashes (idempotent submit).
+// host/common/sha256.h: SHA-256 (libmd's, FIPS 180-4) for job content hashes (idempotent submit)
+// and the plan's input digests.
 #pragma once
 
 #include <array>
+#include <memory>
 #include <cstdint>
 #include <filesystem>
 #include <string>
@@ -11,20 +13,20 @@
 
 namespace tp::host {
 
-/// Incremental SHA-256.
+/// Incremental SHA-256. Copyable, so a digest can be taken of a prefix and hashing go on.
 class Sha256 {
  public:
   Sha256();
+  ~Sha256();
+  Sha256(const Sha256& other);
+  Sha256& operator=(const Sha256& other);
   void update(std::string_view bytes);
-  /// The digest as 64 lower-case hex digits; the object is spent afterwards.
-  std::string hex_digest();
+  /// The digest as 64 lower-case hex digits of the bytes so far; the object is unchanged.
+  std::string hex_digest() const;
 
  private:
-  void block(const std::uint8_t* p);
-  std::array<std::uint32_t, 8> h_;
-  std::array<std::uint8_t, 64> buf_{};
-  size_t used_ = 0;
-  std::uint64_t total_bytes_ = 0;
+  struct Context;  // libmd's SHA2_CTX, kept out of this header
+  std::unique_ptr<Context> ctx_;
 };
 
 /// Hash of a job package: a file's bytes, or a folder's sorted relative paths, file types and

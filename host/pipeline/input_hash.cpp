@@ -1,7 +1,6 @@
 // host/pipeline/input_hash.cpp: the digest of a pipeline step's inputs (see internal/input_hash.h).
 #include "host/pipeline/internal/input_hash.h"
 
-#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <vector>
@@ -9,14 +8,7 @@
 namespace tp::host::internal {
 
 void InputHash::mix(const void* data, std::size_t size) {
-  const auto* p = static_cast<const unsigned char*>(data);
-  std::uint64_t a = a_, b = b_;
-  for (std::size_t i = 0; i < size; ++i) {
-    a = (a ^ p[i]) * 0x100000001b3ull;  // FNV-1a
-    b = (b + p[i] + 1) * 0xff51afd7ed558ccdull;
-    b ^= b >> 29;
-  }
-  a_ = a, b_ = b;
+  sha_.update(std::string_view(static_cast<const char*>(data), size));
 }
 
 InputHash& InputHash::add(std::string_view label, std::string_view bytes) {
@@ -60,11 +52,6 @@ Status InputHash::add_file(std::string_view label, const std::filesystem::path& 
   return {};
 }
 
-std::string InputHash::hex() const {
-  char buf[33];
-  std::snprintf(buf, sizeof buf, "%016llx%016llx", static_cast<unsigned long long>(a_),
-                static_cast<unsigned long long>(b_));
-  return buf;
-}
+std::string InputHash::hex() const { return sha_.hex_digest().substr(0, 32); }
 
 }  // namespace tp::host::internal

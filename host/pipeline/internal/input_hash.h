@@ -1,4 +1,4 @@
-// host/pipeline/internal/input_hash.h: a 128-bit digest of what a pipeline step reads (job fields,
+// host/pipeline/internal/input_hash.h: a digest (SHA-256, first 128 bits) of what a pipeline step reads (job fields,
 // file bytes, upstream results), to tell whether a stored plan step is still valid.
 #pragma once
 
@@ -8,12 +8,12 @@
 #include <string_view>
 
 #include "host/common/error.h"
+#include "host/common/sha256.h"
 
 namespace tp::host::internal {
 
 /// Accumulates labelled values into a digest. Every value is framed with its label and length,
-/// so ("ab", "c") and ("a", "bc") differ. Doubles are hashed by their bit pattern. Not a
-/// cryptographic hash: it detects changes, it does not resist forgery.
+/// so ("ab", "c") and ("a", "bc") differ. Doubles are hashed by their bit pattern.
 class InputHash {
  public:
   InputHash& add(std::string_view label, std::string_view bytes);
@@ -30,8 +30,7 @@ class InputHash {
 
  private:
   void mix(const void* data, std::size_t size);
-  std::uint64_t a_ = 0xcbf29ce484222325ull;  // FNV-1a 64 offset basis
-  std::uint64_t b_ = 0x9e3779b97f4a7c15ull;  // a second, differently mixed lane
+  Sha256 sha_;
 };
 
 }  // namespace tp::host::internal
