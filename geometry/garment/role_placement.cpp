@@ -4,12 +4,12 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <numbers>
 #include <string>
 
 namespace tp::geometry {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 // Slices and rays step this far (mm).
 constexpr double kSliceStep_mm = 10;
 constexpr double kRayStep_mm = 4;
@@ -229,7 +229,7 @@ std::vector<Placement3d> role_placements(const Pattern& pattern, const BodySdf& 
     // Outward from the body, perpendicular to the arm, in the arm's vertical plane.
     Vec3 out_dir = normalized(cross(up, Z) * (left ? -1.0 : 1.0));
     if (dot(out_dir, Vec3{left ? 1.0 : -1.0, 0, 0}) < 0) out_dir = -out_dir;
-    const double r = b.width() / (2 * kPi);
+    const double r = b.width() / (2 * std::numbers::pi);
     const double len = b.height();
     const Vec3 centre = shoulder + down * (kCapDrop_mm + len / 2) + out_dir * r;
     out[i] = frame(cross(up, out_dir), up, Vec2{(b.min.x + b.max.x) / 2, (b.min.y + b.max.y) / 2}, centre);

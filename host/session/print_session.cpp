@@ -10,6 +10,7 @@
 
 #include "device/protocol/recording.h"
 #include "host/session/internal/session_log.h"
+#include "host/session/internal/session_text.h"
 #include "host/session/sim_reexec.h"
 
 namespace tp::host {
@@ -17,19 +18,8 @@ namespace tp::host {
 using Clock = std::chrono::steady_clock;
 using std::chrono::milliseconds;
 
-namespace {
-
-Error from_device(const device::Error& e, const std::string& context) {
-  return Error{ErrorCode::kPrinter, context + ": " + e.message};
-}
-
-std::string mm(std::int64_t um) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.1f mm", static_cast<double>(um) / 1000.0);
-  return b;
-}
-
-}  // namespace
+using internal::from_device;
+using internal::mm_text;
 
 PrintSession::PrintSession(PrinterConfig config, std::unique_ptr<device::Transport> transport,
                            std::unique_ptr<drivers::GpioLines> gpio)
@@ -96,7 +86,7 @@ std::string PrintSession::job_where() const {
   const device::StatusMsg* s = link_ ? link_->status() : nullptr;
   return " (job " + std::to_string(job_.job_id) + " '" + job_.name + "': swaths below " + std::to_string(acked_next_) +
          " acknowledged, below " + std::to_string(printed_next_) + " printed" +
-         (s ? ", fabric at " + mm(s->fabric_pos_um) : std::string()) + ")";
+         (s ? ", fabric at " + mm_text(s->fabric_pos_um) : std::string()) + ")";
 }
 
 Status PrintSession::fail_job(ErrorCode code, const std::string& message) {
@@ -172,7 +162,7 @@ device::Status PrintSession::send_wire_swath(const device::Swath& swath) {
   const std::int64_t feed_um = static_cast<std::int64_t>(swath.header.feed_before_um) + feed_fix_um_;
   if (feed_um < 0)
     return device::fail(device::ErrorCode::kInvalidArgument,
-                        "the printer lost the job with the fabric " + mm(-feed_um) + " past where swath " +
+                        "the printer lost the job with the fabric " + mm_text(-feed_um) + " past where swath " +
                             std::to_string(swath.header.index) +
                             " starts, and fabric cannot feed back: cut off the partial print and print the job again");
   device::Swath fixed = swath;
@@ -273,7 +263,7 @@ Result<JobResult> PrintSession::end_job(std::uint32_t final_feed_um, const geome
   ending_ = false;
   stats_.link = link_->stats();
   session_log()->info("job {} '{}' completed: {} swaths printed, {} fabric, {} cues fired", job_.job_id, job_.name,
-                      report->swaths_printed, mm(report->feed_travel_um), report->cues_fired);
+                      report->swaths_printed, mm_text(report->feed_travel_um), report->cues_fired);
   return JobResult{*report, stats_, cues_};
 }
 

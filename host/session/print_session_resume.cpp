@@ -5,25 +5,15 @@
 #include <cstdio>
 
 #include "host/session/internal/session_log.h"
+#include "host/session/internal/session_text.h"
 #include "host/session/print_session.h"
 
 namespace tp::host {
 
 using std::chrono::milliseconds;
 
-namespace {
-
-Error from_device(const device::Error& e, const std::string& context) {
-  return Error{ErrorCode::kPrinter, context + ": " + e.message};
-}
-
-std::string mm(std::int64_t um) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%.1f mm", static_cast<double>(um) / 1000.0);
-  return b;
-}
-
-}  // namespace
+using internal::from_device;
+using internal::mm_text;
 
 void PrintSession::note_printed(const device::StatusMsg& st) {
   if (st.printed_next <= printed_next_) return;
@@ -51,7 +41,7 @@ Status PrintSession::attach_or_open(const device::StatusMsg& st) {
     planned_end_um_ = now->queued_fabric_um;
     session_log()->info("{} still open on the printer: swaths below {} printed (fabric at {}), below {} received; "
                         "resuming at swath {}",
-                        job, now->printed_next, mm(now->fabric_pos_um), now->swath_next, next_send_);
+                        job, now->printed_next, mm_text(now->fabric_pos_um), now->swath_next, next_send_);
     seen_status_ = 0;
     return absorb_status();
   }
@@ -116,7 +106,7 @@ Status PrintSession::resume_lost_job(const device::StatusMsg& st, bool& disconne
   const std::string job = "job " + std::to_string(job_.job_id) + " '" + job_.name + "'";
   session_log()->warn("printer lost {} (power loss or buffer cleared): swaths below {} are on the fabric, the last laid "
                       "at {}, fabric at {}; resuming from swath {}",
-                      job, k, mm(laid_um), mm(stands_um), k);
+                      job, k, mm_text(laid_um), mm_text(stands_um), k);
   auto stop = [&](const std::string& why) -> Status {
     const std::string msg = "printer lost " + job + " after printing swaths below " + std::to_string(k) + ": " + why;
     if (active_) return fail_job(ErrorCode::kPrinter, msg);
@@ -194,7 +184,7 @@ Status PrintSession::resume_lost_job(const device::StatusMsg& st, bool& disconne
     }
   }
   seen_status_ = 0;
-  session_log()->info("{} reopened on the printer at swath {} with the fabric at {}", job, k, mm(stands_um));
+  session_log()->info("{} reopened on the printer at swath {} with the fabric at {}", job, k, mm_text(stands_um));
   return {};
 }
 
