@@ -421,26 +421,9 @@ void PrinterController::set_condition(PrinterCondition condition, bool active) {
 
 void PrinterController::lose_job(const std::string& why) {
   if (!job_active_) return;
-  JobReportMsg r = report();
-  r.outcome = JobOutcome::kLost;
-  last_report_ = r;
-  last_job_id_ = job_.job_id;
-  last_outcome_ = JobOutcome::kLost;
-  last_printed_next_ = printed_next_;
-  last_printed_fabric_um_ = printed_fabric_um_;
-  last_fabric_pos_um_ = fabric_pos_um_;
   emit(FirmwareEventKind::kJobEnd, printed_next_, 0, "lost: " + why);
-  job_active_ = false;
-  fault_ = PrinterCondition::kNone;
-  cue_waiting_ = 0;
-  cues_.clear();
-  buffer_.clear();
-  rx_swath_.reset();
-  ignoring_swath_.reset();
-  op_ = OpKind::kNone;
-  status_dirty_ = true;
-  if (sink_) sink_->job_finished(r);
-  note_state();
+  // No report goes to the host: the job is lost, and the host learns it from the status.
+  finish_job(JobOutcome::kLost, /*send_report=*/false);
 }
 
 NonVolatileState PrinterController::nonvolatile() const {

@@ -160,7 +160,9 @@ class PrinterController {
   void complete_op();
   void print_front();
   void check_cues();
-  void finish_job(JobOutcome outcome);
+  /// Ends the open job with `outcome`: records it as the last job, clears the buffer and cues,
+  /// and (with `send_report`) queues its report to the host.
+  void finish_job(JobOutcome outcome, bool send_report = true);
   JobReportMsg report() const;
 
   PrinterModel model_;

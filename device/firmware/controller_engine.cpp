@@ -165,7 +165,7 @@ JobReportMsg PrinterController::report() const {
   return r;
 }
 
-void PrinterController::finish_job(JobOutcome outcome) {
+void PrinterController::finish_job(JobOutcome outcome, bool send_report) {
   JobReportMsg r = report();
   r.outcome = outcome;
   last_report_ = r;
@@ -174,15 +174,18 @@ void PrinterController::finish_job(JobOutcome outcome) {
   last_printed_next_ = printed_next_;
   last_printed_fabric_um_ = printed_fabric_um_;
   last_fabric_pos_um_ = fabric_pos_um_;
-  std::vector<std::uint8_t> payload;
-  encode(r, payload);
-  queue_frame(MessageType::kJobReport, payload);
+  if (send_report) {
+    std::vector<std::uint8_t> payload;
+    encode(r, payload);
+    queue_frame(MessageType::kJobReport, payload);
+  }
   job_active_ = false;
   fault_ = PrinterCondition::kNone;
   cue_waiting_ = 0;
   cues_.clear();
   buffer_.clear();
   rx_swath_.reset();
+  ignoring_swath_.reset();
   op_ = OpKind::kNone;
   status_dirty_ = true;
   if (sink_) sink_->job_finished(r);
