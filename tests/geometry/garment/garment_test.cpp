@@ -9,51 +9,12 @@
 #include "geometry/garment/distortion.h"
 #include "geometry/garment/garment_obj.h"
 #include "geometry/garment/sew_garment.h"
+#include "tests/geometry/garment/tube_fixture.h"
 
 namespace tp::geometry {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
-// A closed capped cylinder of radius r round the y axis from y0 to y1.
-BodySdf cylinder_body(double r, double y0, double y1) {
-  ScalarGrid g;
-  g.spacing_mm = 5;
-  g.origin_mm = {-r - 20, y0 - 20, -r - 20};
-  g.nx = g.nz = static_cast<int>(std::ceil((2 * r + 40) / 5)) + 1;
-  g.ny = static_cast<int>(std::ceil((y1 - y0 + 40) / 5)) + 1;
-  for (int k = 0; k < g.nz; ++k)
-    for (int j = 0; j < g.ny; ++j)
-      for (int i = 0; i < g.nx; ++i) {
-        Vec3 p = g.origin_mm + Vec3{double(i), double(j), double(k)} * 5.0;
-        g.values.push_back(static_cast<float>(std::max({std::hypot(p.x, p.z) - r, y0 - p.y, p.y - y1})));
-      }
-  auto sdf = BodySdf::build(marching_tetrahedra(g), 6, 3);
-  EXPECT_TRUE(sdf);
-  return std::move(*sdf);
-}
-
-Piece rectangle(const std::string& name, double w, double h) {
-  Piece p;
-  p.name = name;
-  p.role = name;
-  p.edges = {Edge{"hem", EdgeCurve::kLine, {}, {{0, 0}, {w, 0}}}, Edge{"right", EdgeCurve::kLine, {}, {{w, 0}, {w, h}}},
-             Edge{"top", EdgeCurve::kLine, {}, {{w, h}, {0, h}}}, Edge{"left", EdgeCurve::kLine, {}, {{0, h}, {0, 0}}}};
-  return p;
-}
-
-// Two panels that close into a tube of radius 115 round a cylinder of radius 100.
-Pattern tube_pattern() {
-  const double w = kPi * 115, h = 300;
-  Pattern p;
-  p.name = "tube";
-  p.pieces = {rectangle("front", w, h), rectangle("back", w, h)};
-  p.pieces[0].placement = Placement3d{{1, 0, 0, 0, 1, 0, 0, 0, 1}, {-w / 2, 100, 115}};
-  p.pieces[1].placement = Placement3d{{-1, 0, 0, 0, 1, 0, 0, 0, -1}, {w / 2, 100, -115}};
-  p.stitches = {Stitch{EdgeSpan{0, 1, 0, -1}, EdgeSpan{1, 3, 0, -1}, false},
-                Stitch{EdgeSpan{1, 1, 0, -1}, EdgeSpan{0, 3, 0, -1}, false}};
-  return p;
-}
+using namespace test_fixture;
 
 TEST(SewGarment, TubeRoundACylinderKeepsItsShapeAndSharesSeamVertices) {
   BodySdf body = cylinder_body(100, 0, 600);
