@@ -1,22 +1,20 @@
-// rip/image/tiff_band_writer.cpp: a streaming baseline TIFF / BigTIFF writer for separations: strips
-// go to disk as rows arrive (PackBits, Deflate or raw), the directory is written last.
+// rip/image/tiff_band_writer.cpp: the streaming separation TIFF / BigTIFF writer on libtiff: strips
+// go to disk as rows arrive (PackBits, Deflate or raw), the directory when the file closes.
 //
-// Written here rather than through OpenImageIO because separations arrive already packed at 1 or
-// 2 bits: OIIO would unpack them to bytes and re-pack them per sample, which cost more than
-// screening them.
+// Separations are tagged as their format means them: Photometric Separated, InkSet CMYK when the
+// channels are cyan, magenta, yellow, black in that order, otherwise InkSet multi-ink with one
+// InkNames entry per channel; no ExtraSamples, so no reader takes a channel for alpha.
 #include "rip/image/tiff_band_writer.h"
 
 #include <algorithm>
-#include <array>
 #include <cmath>
-#include <cstdio>
+#include <cstdarg>
 #include <cstring>
 
 #include <spdlog/fmt/fmt.h>
-#include <zlib.h>
+#include <tiffio.h>
 
 #include "rip/image/internal/tiff_channels.h"
-#include "rip/swath/packbits.h"
 
 namespace tp::rip {
 
@@ -26,161 +24,46 @@ constexpr std::size_t kTargetStripBytes = 256 * 1024;  ///< strips of about this
 constexpr int kMaxRowsPerStrip = 256;
 constexpr double kBigTiffThresholdBytes = 3.5e9;       ///< past this a classic TIFF's offsets may overflow
 
-enum TiffType : std::uint16_t { kShort = 3, kLong = 4, kRational = 5, kAscii = 2, kLong8 = 16 };
-
-/// One directory entry before layout: its values as raw little-endian bytes.
-struct Entry {
-  std::uint16_t tag;
-  std::uint16_t type;
-  std::uint64_t count;
-  std::vector<std::uint8_t> bytes;
-};
-
-void put_le(std::vector<std::uint8_t>& out, std::uint64_t v, int n) {
-  for (int i = 0; i < n; ++i) out.push_back(static_cast<std::uint8_t>(v >> (8 * i)));
-}
-
-Entry shorts(std::uint16_t tag, const std::vector<std::uint16_t>& v) {
-  Entry e{tag, kShort, v.size(), {}};
-  for (auto x : v) put_le(e.bytes, x, 2);
-  return e;
-}
-Entry longs(std::uint16_t tag, const std::vector<std::uint32_t>& v) {
-  Entry e{tag, kLong, v.size(), {}};
-  for (auto x : v) put_le(e.bytes, x, 4);
-  return e;
-}
-Entry offsets(std::uint16_t tag, const std::vector<std::uint64_t>& v, bool big) {
-  Entry e{tag, static_cast<std::uint16_t>(big ? kLong8 : kLong), v.size(), {}};
-  for (auto x : v) put_le(e.bytes, x, big ? 8 : 4);
-  return e;
-}
-Entry ascii(std::uint16_t tag, const std::string& s) {
-  Entry e{tag, kAscii, s.size() + 1, {}};
-  e.bytes.assign(s.begin(), s.end());
-  e.bytes.push_back(0);
-  return e;
-}
-Entry rational(std::uint16_t tag, std::uint32_t num, std::uint32_t den) {
-  Entry e{tag, kRational, 1, {}};
-  put_le(e.bytes, num, 4);
-  put_le(e.bytes, den, 4);
-  return e;
+/// libtiff's messages for one file, kept for the error that names it.
+int keep_message(TIFF*, void* user_data, const char* module, const char* fmt, va_list ap) {
+  char buf[512];
+  std::vsnprintf(buf, sizeof buf, fmt, ap);
+  auto* out = static_cast<std::string*>(user_data);
+  *out = (module ? std::string(module) + ": " : std::string()) + buf;
+  return 1;  // handled: nothing on stderr
 }
 
 }  // namespace
 
+bool is_cmyk_ink_set(const std::vector<std::string>& channel_names) {
+  return channel_names == std::vector<std::string>{"cyan", "magenta", "yellow", "black"};
+}
+
 struct TiffBandWriter::Impl {
   std::string name;
-  std::FILE* file = nullptr;
+  std::string libtiff_error;
+  TIFF* tif = nullptr;
   int width = 0, channels = 0, bits = 8;
   std::int64_t height = 0, next_row = 0;
-  TiffCompression compression = TiffCompression::kPackBits;
-  bool big = false;
-  std::string description;
-  double dpi_x = 0, dpi_y = 0;
   int rows_per_strip = 1;
-  std::size_t row_bytes = 0;               ///< packed bytes of one row (all samples)
-  std::vector<std::uint8_t> strip;         ///< packed rows of the strip being filled
+  std::size_t row_bytes = 0;        ///< packed bytes of one row (all samples)
+  std::vector<std::uint8_t> strip;  ///< packed rows of the strip being filled
   int strip_rows = 0;
-  std::vector<std::uint8_t> encoded;
-  std::vector<std::uint64_t> strip_offsets, strip_sizes;
-  std::uint64_t file_pos = 0;
+  std::uint32_t strip_index = 0;
   bool closed = false;
 
-  Status write_bytes(const void* data, std::size_t n) {
-    if (n && std::fwrite(data, 1, n, file) != n)
-      return fail(ErrorCode::kIo, fmt::format("{}: write failed at byte {}", name, file_pos));
-    file_pos += n;
-    return {};
+  [[nodiscard]] std::unexpected<Error> io_error(const std::string& what) const {
+    return fail(ErrorCode::kIo, fmt::format("{}: {}{}", name, what, libtiff_error.empty() ? "" : " (" + libtiff_error + ")"));
   }
 
-  /// Compresses and writes the filled strip.
+  /// Hands the filled strip to libtiff, which compresses and writes it.
   Status flush_strip() {
     if (strip_rows == 0) return {};
-    const std::size_t raw = static_cast<std::size_t>(strip_rows) * row_bytes;
-    const std::uint8_t* data = strip.data();
-    std::size_t size = raw;
-    if (compression == TiffCompression::kPackBits) {
-      // TIFF PackBits restarts at every row.
-      encoded.resize(static_cast<std::size_t>(strip_rows) * packbits_max_size(row_bytes));
-      size = 0;
-      for (int r = 0; r < strip_rows; ++r)
-        size += packbits_encode({strip.data() + static_cast<std::size_t>(r) * row_bytes, row_bytes}, encoded.data() + size);
-      data = encoded.data();
-    } else if (compression == TiffCompression::kDeflate) {
-      uLongf n = compressBound(static_cast<uLong>(raw));
-      encoded.resize(n);
-      if (compress2(encoded.data(), &n, strip.data(), static_cast<uLong>(raw), Z_BEST_SPEED) != Z_OK)
-        return fail(ErrorCode::kIo, fmt::format("{}: deflate failed", name));
-      size = n;
-      data = encoded.data();
-    }
-    strip_offsets.push_back(file_pos);
-    strip_sizes.push_back(size);
+    const auto raw = static_cast<tmsize_t>(static_cast<std::size_t>(strip_rows) * row_bytes);
+    if (TIFFWriteEncodedStrip(tif, strip_index, strip.data(), raw) < 0)
+      return io_error(fmt::format("cannot write strip {} (rows {}..{})", strip_index, next_row - strip_rows, next_row - 1));
+    ++strip_index;
     strip_rows = 0;
-    return write_bytes(data, size);
-  }
-
-  /// Writes the directory at the end of the file and points the header at it.
-  Status write_directory() {
-    std::vector<Entry> entries;
-    entries.push_back(longs(256, {static_cast<std::uint32_t>(width)}));
-    entries.push_back(longs(257, {static_cast<std::uint32_t>(height)}));
-    entries.push_back(shorts(258, std::vector<std::uint16_t>(static_cast<std::size_t>(channels), static_cast<std::uint16_t>(bits))));
-    const std::uint16_t comp = compression == TiffCompression::kPackBits ? 32773
-                               : compression == TiffCompression::kDeflate ? 8
-                                                                          : 1;
-    entries.push_back(shorts(259, {comp}));
-    entries.push_back(shorts(262, {1}));  // min-is-black: a sample is the ink amount
-    entries.push_back(ascii(270, description));
-    entries.push_back(offsets(273, strip_offsets, big));
-    entries.push_back(shorts(277, {static_cast<std::uint16_t>(channels)}));
-    entries.push_back(longs(278, {static_cast<std::uint32_t>(rows_per_strip)}));
-    entries.push_back(offsets(279, strip_sizes, big));
-    if (dpi_x > 0 && dpi_y > 0) {
-      // Hundredths of a dot per inch keep fractional resolutions.
-      entries.push_back(rational(282, static_cast<std::uint32_t>(std::lround(dpi_x * 100)), 100));
-      entries.push_back(rational(283, static_cast<std::uint32_t>(std::lround(dpi_y * 100)), 100));
-    }
-    entries.push_back(shorts(284, {1}));
-    if (dpi_x > 0 && dpi_y > 0) entries.push_back(shorts(296, {2}));  // inches
-    entries.push_back(ascii(305, "tp rip"));
-    if (channels > 1) entries.push_back(shorts(338, std::vector<std::uint16_t>(static_cast<std::size_t>(channels - 1), 0)));
-
-    // Values that do not fit in an entry go first, each at an even offset, then the directory.
-    const std::size_t inline_bytes = big ? 8 : 4;
-    std::vector<std::uint8_t> blob;
-    if (file_pos & 1) blob.push_back(0);
-    std::vector<std::uint64_t> value_at(entries.size(), 0);
-    for (std::size_t i = 0; i < entries.size(); ++i) {
-      if (entries[i].bytes.size() <= inline_bytes) continue;
-      value_at[i] = file_pos + blob.size();
-      blob.insert(blob.end(), entries[i].bytes.begin(), entries[i].bytes.end());
-      if (blob.size() & 1) blob.push_back(0);
-    }
-    const std::uint64_t ifd = file_pos + blob.size();
-    put_le(blob, entries.size(), big ? 8 : 2);
-    for (std::size_t i = 0; i < entries.size(); ++i) {
-      const Entry& e = entries[i];
-      put_le(blob, e.tag, 2);
-      put_le(blob, e.type, 2);
-      put_le(blob, e.count, big ? 8 : 4);
-      if (e.bytes.size() <= inline_bytes) {
-        std::vector<std::uint8_t> v = e.bytes;
-        v.resize(inline_bytes, 0);
-        blob.insert(blob.end(), v.begin(), v.end());
-      } else {
-        put_le(blob, value_at[i], big ? 8 : 4);
-      }
-    }
-    put_le(blob, 0, big ? 8 : 4);  // no next directory
-    if (auto s = write_bytes(blob.data(), blob.size()); !s) return s;
-    // Header: the first directory's offset.
-    std::vector<std::uint8_t> head;
-    put_le(head, ifd, big ? 8 : 4);
-    if (std::fseek(file, big ? 8 : 4, SEEK_SET) != 0 || std::fwrite(head.data(), 1, head.size(), file) != head.size())
-      return fail(ErrorCode::kIo, fmt::format("{}: cannot finish the TIFF header", name));
     return {};
   }
 };
@@ -188,7 +71,7 @@ struct TiffBandWriter::Impl {
 TiffBandWriter::TiffBandWriter(std::unique_ptr<Impl> impl) : impl_(std::move(impl)) {}
 
 TiffBandWriter::~TiffBandWriter() {
-  if (impl_ && impl_->file) std::fclose(impl_->file);
+  if (impl_ && impl_->tif) TIFFClose(impl_->tif);
 }
 
 Result<std::unique_ptr<TiffBandWriter>> TiffBandWriter::open(const std::filesystem::path& path, int width_px,
@@ -202,35 +85,55 @@ Result<std::unique_ptr<TiffBandWriter>> TiffBandWriter::open(const std::filesyst
                                                          width_px, height_px, channel_names.size()));
   if (bits_per_sample != 1 && bits_per_sample != 2 && bits_per_sample != 4 && bits_per_sample != 8)
     return fail(ErrorCode::kInvalidArgument, fmt::format("{}: bits_per_sample {} is not 1, 2, 4 or 8", name, bits_per_sample));
+  for (const auto& ink : channel_names)
+    if (ink.empty() || ink.find('\0') != std::string::npos || ink.find(',') != std::string::npos)
+      return fail(ErrorCode::kInvalidArgument, fmt::format("{}: channel name '{}' is empty or holds a comma", name, ink));
   auto impl = std::make_unique<Impl>();
-  impl->name = name;
-  impl->width = width_px;
-  impl->height = height_px;
-  impl->channels = static_cast<int>(channel_names.size());
-  impl->bits = bits_per_sample;
-  impl->compression = compression;
-  impl->dpi_x = dpi_x;
-  impl->dpi_y = dpi_y;
-  impl->description = channel_description(channel_names);
-  impl->row_bytes = (static_cast<std::size_t>(width_px) * impl->channels * bits_per_sample + 7) / 8;
-  impl->rows_per_strip = static_cast<int>(std::clamp<std::size_t>(kTargetStripBytes / impl->row_bytes, 1, kMaxRowsPerStrip));
-  impl->strip.resize(impl->row_bytes * impl->rows_per_strip);
+  Impl& m = *impl;
+  m.name = name;
+  m.width = width_px;
+  m.height = height_px;
+  m.channels = static_cast<int>(channel_names.size());
+  m.bits = bits_per_sample;
+  m.row_bytes = (static_cast<std::size_t>(width_px) * m.channels * bits_per_sample + 7) / 8;
+  m.rows_per_strip = static_cast<int>(std::clamp<std::size_t>(kTargetStripBytes / m.row_bytes, 1, kMaxRowsPerStrip));
+  m.strip.resize(m.row_bytes * m.rows_per_strip);
   // Raw size decides: compressed data is never much larger than raw.
-  impl->big = force_bigtiff || static_cast<double>(impl->row_bytes) * height_px > kBigTiffThresholdBytes;
-  impl->file = std::fopen(name.c_str(), "wb");
-  if (!impl->file) return fail(ErrorCode::kIo, fmt::format("{}: cannot create file", name));
-  // Header with a placeholder directory offset, patched by close().
-  std::vector<std::uint8_t> head{'I', 'I'};
-  if (impl->big) {
-    put_le(head, 43, 2);
-    put_le(head, 8, 2);
-    put_le(head, 0, 2);
-    put_le(head, 0, 8);
-  } else {
-    put_le(head, 42, 2);
-    put_le(head, 0, 4);
-  }
-  if (auto s = impl->write_bytes(head.data(), head.size()); !s) return std::unexpected(s.error());
+  const bool big = force_bigtiff || static_cast<double>(m.row_bytes) * height_px > kBigTiffThresholdBytes;
+
+  TIFFOpenOptions* opts = TIFFOpenOptionsAlloc();
+  TIFFOpenOptionsSetErrorHandlerExtR(opts, keep_message, &m.libtiff_error);
+  m.tif = TIFFOpenExt(name.c_str(), big ? "w8" : "w", opts);
+  TIFFOpenOptionsFree(opts);
+  if (!m.tif) return m.io_error("cannot create file");
+
+  // Ink names: NUL-separated, one per channel (TIFF 6.0 section 16).
+  std::string ink_names;
+  for (const auto& ink : channel_names) ink_names += ink + '\0';
+  const bool cmyk = is_cmyk_ink_set(channel_names);
+  const std::uint16_t comp = compression == TiffCompression::kPackBits ? COMPRESSION_PACKBITS
+                             : compression == TiffCompression::kDeflate ? COMPRESSION_ADOBE_DEFLATE
+                                                                        : COMPRESSION_NONE;
+  const std::string description = channel_description(channel_names);
+  bool ok = TIFFSetField(m.tif, TIFFTAG_IMAGEWIDTH, static_cast<std::uint32_t>(width_px)) &&
+            TIFFSetField(m.tif, TIFFTAG_IMAGELENGTH, static_cast<std::uint32_t>(height_px)) &&
+            TIFFSetField(m.tif, TIFFTAG_BITSPERSAMPLE, static_cast<std::uint16_t>(bits_per_sample)) &&
+            TIFFSetField(m.tif, TIFFTAG_SAMPLESPERPIXEL, static_cast<std::uint16_t>(m.channels)) &&
+            TIFFSetField(m.tif, TIFFTAG_PLANARCONFIG, PLANARCONFIG_CONTIG) &&
+            TIFFSetField(m.tif, TIFFTAG_COMPRESSION, comp) &&
+            TIFFSetField(m.tif, TIFFTAG_PHOTOMETRIC, PHOTOMETRIC_SEPARATED) &&
+            TIFFSetField(m.tif, TIFFTAG_INKSET, cmyk ? INKSET_CMYK : INKSET_MULTIINK) &&
+            TIFFSetField(m.tif, TIFFTAG_NUMBEROFINKS, static_cast<std::uint16_t>(m.channels)) &&
+            TIFFSetField(m.tif, TIFFTAG_INKNAMES, static_cast<int>(ink_names.size()), ink_names.c_str()) &&
+            TIFFSetField(m.tif, TIFFTAG_ROWSPERSTRIP, static_cast<std::uint32_t>(m.rows_per_strip)) &&
+            TIFFSetField(m.tif, TIFFTAG_IMAGEDESCRIPTION, description.c_str()) &&
+            TIFFSetField(m.tif, TIFFTAG_SOFTWARE, "tp rip");
+  if (ok && comp == COMPRESSION_ADOBE_DEFLATE) ok = TIFFSetField(m.tif, TIFFTAG_ZIPQUALITY, 1);  // fast: rolls are long
+  if (ok && dpi_x > 0 && dpi_y > 0)
+    ok = TIFFSetField(m.tif, TIFFTAG_XRESOLUTION, static_cast<float>(dpi_x)) &&
+         TIFFSetField(m.tif, TIFFTAG_YRESOLUTION, static_cast<float>(dpi_y)) &&
+         TIFFSetField(m.tif, TIFFTAG_RESOLUTIONUNIT, RESUNIT_INCH);
+  if (!ok) return m.io_error("cannot set the TIFF tags");
   return std::unique_ptr<TiffBandWriter>(new TiffBandWriter(std::move(impl)));
 }
 
@@ -278,17 +181,16 @@ Status TiffBandWriter::close() {
   if (m.closed) return {};
   m.closed = true;
   if (m.next_row != m.height) {
-    std::fclose(m.file);
-    m.file = nullptr;
+    TIFFClose(m.tif);
+    m.tif = nullptr;
     return fail(ErrorCode::kIo, fmt::format("{}: closed after {} of {} rows", m.name, m.next_row, m.height));
   }
   Status s = m.flush_strip();
-  if (s) s = m.write_directory();
-  const bool closed_ok = std::fclose(m.file) == 0;
-  m.file = nullptr;
-  if (!s) return s;
-  if (!closed_ok) return fail(ErrorCode::kIo, fmt::format("{}: cannot finish TIFF", m.name));
-  return {};
+  // TIFFClose writes the directory but reports nothing; flush first so a failure is seen.
+  if (s && !TIFFFlush(m.tif)) s = m.io_error("cannot write the TIFF directory");
+  TIFFClose(m.tif);
+  m.tif = nullptr;
+  return s;
 }
 
 }  // namespace tp::rip
