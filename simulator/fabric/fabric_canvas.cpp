@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "device/swath/packbits.h"
+#include "simulator/fabric/fabric_tiff.h"
 
 namespace tp::sim {
 
@@ -129,23 +130,8 @@ Result<FabricSummary> FabricCanvas::finish(const std::filesystem::path& tif, con
   summary_.preview_scale = scale;
   const std::size_t nch = spec_.inks.size();
 
-  OIIO::ImageSpec tspec(static_cast<int>(spec_.width_px), static_cast<int>(height), static_cast<int>(nch), OIIO::TypeDesc::UINT8);
-  tspec.channelnames = spec_.inks;
-  // Every channel is an ink amount (min-is-black), none is alpha.
-  tspec.alpha_channel = -1;
-  tspec.attribute("tiff:PhotometricInterpretation", 1);
-  tspec.attribute("compression", "zip");
-  tspec.attribute("tiff:zipquality", 1);  // fast: rolls are long, drops compress well anyway
-  tspec.attribute("XResolution", static_cast<float>(spec_.dpi_x));
-  tspec.attribute("YResolution", static_cast<float>(spec_.dpi_y));
-  tspec.attribute("ResolutionUnit", "in");
-  // TIFF keeps no channel names: say which ink each channel is in the description.
-  std::string inks;
-  for (const auto& ink : spec_.inks) inks += (inks.empty() ? "" : ",") + ink;
-  tspec.attribute("ImageDescription", "tp printsim fabric; channels: " + inks + "; samples: summed drop levels");
-  auto tout = OIIO::ImageOutput::create(tif.string());
-  if (!tout || !tout->open(tif.string(), tspec))
-    return fail(ErrorCode::kOutput, tif.string() + ": cannot write TIFF: " + (tout ? tout->geterror() : OIIO::geterror()));
+  auto tout = FabricTiff::open(tif, spec_.width_px, height, spec_.inks, spec_.dpi_x, spec_.dpi_y);
+  if (!tout) return std::unexpected(tout.error());
 
   const std::uint32_t pw = (spec_.width_px + scale - 1) / scale;
   const std::uint64_t ph = (height + scale - 1) / scale;
@@ -184,8 +170,7 @@ Result<FabricSummary> FabricCanvas::finish(const std::filesystem::path& tif, con
       if (std::fread(packed.data(), 1, len, scratch_) != len || !device::packbits_decode(packed, row_bytes_, line))
         return fail(ErrorCode::kOutput, scratch_path_.string() + ": fabric scratch corrupt at row " + std::to_string(y));
     }
-    if (!tout->write_scanline(static_cast<int>(y), 0, OIIO::TypeDesc::UINT8, line.data()))
-      return fail(ErrorCode::kOutput, tif.string() + ": " + tout->geterror());
+    if (auto w = (*tout)->write_row(line.data()); !w) return std::unexpected(w.error());
     // Preview: subtractive mix of the inks, box-filtered scale x scale; blank pixels are white.
     for (std::uint32_t x = 0; x < spec_.width_px; ++x) {
       const std::uint8_t* p = &line[static_cast<std::size_t>(x) * nch];
@@ -214,7 +199,7 @@ Result<FabricSummary> FabricCanvas::finish(const std::filesystem::path& tif, con
       acc_rows = 0;
     }
   }
-  if (!tout->close()) return fail(ErrorCode::kOutput, tif.string() + ": " + tout->geterror());
+  if (auto c = (*tout)->close(); !c) return std::unexpected(c.error());
   if (!pout->close()) return fail(ErrorCode::kOutput, png.string() + ": " + pout->geterror());
   return summary_;
 }
