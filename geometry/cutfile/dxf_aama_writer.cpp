@@ -8,17 +8,19 @@
 #include <fstream>
 #include <set>
 
+#include "geometry/common/aama_layers.h"
+
 namespace tp::geometry {
 namespace {
 
-// ASTM D6673 layer numbers.
-constexpr const char* kBoundary = "1";
-constexpr const char* kNotch = "4";
-constexpr const char* kGrain = "7";
-constexpr const char* kInternal = "8";
-constexpr const char* kDrill = "13";
-constexpr const char* kSew = "14";
-constexpr const char* kAnnotation = "15";
+// ASTM D6673 layer names, from the one table the importer reads too.
+constexpr const char* kBoundary = aama_layer_name(AamaLayer::kBoundary);
+constexpr const char* kNotch = aama_layer_name(AamaLayer::kNotches);
+constexpr const char* kGrain = aama_layer_name(AamaLayer::kGrainLine);
+constexpr const char* kInternal = aama_layer_name(AamaLayer::kInternalLines);
+constexpr const char* kDrill = aama_layer_name(AamaLayer::kDrillHoles);
+constexpr const char* kSew = aama_layer_name(AamaLayer::kSewLines);
+constexpr const char* kAnnotation = aama_layer_name(AamaLayer::kAnnotation);
 constexpr double kTextHeight_mm = 5;        ///< piece annotation, largest
 constexpr double kMinTextHeight_mm = 1;     ///< piece annotation on small pieces
 constexpr double kStyleTextHeight_mm = 2.5; ///< file-level Style System Text

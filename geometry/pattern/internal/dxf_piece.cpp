@@ -7,6 +7,7 @@
 #include <limits>
 #include <map>
 
+#include "geometry/common/aama_layers.h"
 #include "geometry/pattern/curve.h"
 #include "geometry/pattern/darts.h"
 #include "geometry/pattern/dxf_aama.h"
@@ -322,7 +323,7 @@ Result<DxfPiece> build_dxf_piece(const DxfBlock& block, double unit, const std::
   bool has_boundary = L.curves.count(1) > 0;
   if (!has_sew && !has_boundary) return out;
   // The model's outline is the seam line: the sew line when given, else the boundary.
-  const int outline_layer = has_sew ? 14 : 1;
+  const int outline_layer = aama_number(has_sew ? AamaLayer::kSewLines : AamaLayer::kBoundary);
   auto loops = loops_of(L.curves[outline_layer]);
   if (loops.empty())
     return fail(ErrorCode::kInvalidPattern, who + ": the " + std::string(has_sew ? "sew line (layer 14)" : "boundary (layer 1)") +
@@ -334,10 +335,10 @@ Result<DxfPiece> build_dxf_piece(const DxfBlock& block, double unit, const std::
   if (loop_area(loop, tol) < 0) loop = reversed(loop);
   TP_TRY(segs, segments_of(loop, tol));
   // Turn points mark the corners of the boundary they were drawn for.
-  bool use_turn_points = outline_layer == 1 && !L.points[2].empty();
+  bool use_turn_points = outline_layer == aama_number(AamaLayer::kBoundary) && !L.points[aama_number(AamaLayer::kTurnPoints)].empty();
   if (use_turn_points)
     for (OutlineSegment& s : segs)
-      for (Vec2 tp : L.points[2])
+      for (Vec2 tp : L.points[aama_number(AamaLayer::kTurnPoints)])
         if (norm(s.edge.points_mm.front() - tp) <= kTurnPointTolerance_mm) s.corner_before = true;
   piece.edges = edges_from_segments(std::move(segs), options.corner_angle_deg, !use_turn_points);
   if (piece.edges.empty()) return fail(ErrorCode::kInvalidPattern, who + ": the outline has no length");
@@ -346,8 +347,8 @@ Result<DxfPiece> build_dxf_piece(const DxfBlock& block, double unit, const std::
   // Notches: a point, or a short line square to the cut line whose extension meets the outline.
   const double snap = has_sew ? kDxfNotchToSewLine_mm : kDxfNotchSnap_mm;
   std::vector<std::pair<Projection, Vec2>> found;
-  for (Vec2 at : L.points[4]) found.push_back({project(piece, at), at});
-  for (const Polyline& p : L.curves[4]) {
+  for (Vec2 at : L.points[aama_number(AamaLayer::kNotches)]) found.push_back({project(piece, at), at});
+  for (const Polyline& p : L.curves[aama_number(AamaLayer::kNotches)]) {
     Projection x = cross_outline(piece, p.pts.front(), p.pts.back());
     if (x.edge < 0) {
       Projection a = project(piece, p.pts.front()), b = project(piece, p.pts.back());
@@ -362,12 +363,12 @@ Result<DxfPiece> build_dxf_piece(const DxfBlock& block, double unit, const std::
     }
     piece.notches.push_back(Notch{"notch" + std::to_string(piece.notches.size() + 1), pr.edge, pr.position_mm, NotchType::kSlit});
   }
-  if (!L.curves[7].empty()) {
-    const Polyline& g = L.curves[7].front();
+  if (!L.curves[aama_number(AamaLayer::kGrainLine)].empty()) {
+    const Polyline& g = L.curves[aama_number(AamaLayer::kGrainLine)].front();
     if (norm(g.pts.back() - g.pts.front()) > 0) piece.grain = GrainLine{g.pts.front(), g.pts.back()};
   }
-  if (!L.curves[6].empty()) {
-    const Polyline& m = L.curves[6].front();
+  if (!L.curves[aama_number(AamaLayer::kMirrorLine)].empty()) {
+    const Polyline& m = L.curves[aama_number(AamaLayer::kMirrorLine)].front();
     Vec2 p = m.pts.front(), q = m.pts.back();
     std::vector<int> on;
     if (norm(q - p) > 0)
@@ -379,13 +380,13 @@ Result<DxfPiece> build_dxf_piece(const DxfBlock& block, double unit, const std::
     if (on.size() == 1) piece.fold_edge = on.front();
     else warnings.push_back(who + ": mirror line matches " + std::to_string(on.size()) + " outline edges; piece kept as drawn");
   }
-  for (int layer : {8, 11})
+  for (int layer : {aama_number(AamaLayer::kInternalLines), aama_number(AamaLayer::kInternalCutouts)})
     for (const Polyline& p : L.curves[layer]) {
-      std::string base = layer == 8 ? "line" : "cutout";
+      std::string base = layer == aama_number(AamaLayer::kInternalLines) ? "line" : "cutout";
       piece.internal_lines.push_back(InternalLine{base + std::to_string(piece.internal_lines.size() + 1), flattened(p, tol)});
     }
-  for (Vec2 p : L.points[13]) piece.drill_holes.push_back(DrillHole{p, kDefaultDrill_mm});
-  for (const auto& [c, r] : L.circles[13]) piece.drill_holes.push_back(DrillHole{c, 2 * r});
+  for (Vec2 p : L.points[aama_number(AamaLayer::kDrillHoles)]) piece.drill_holes.push_back(DrillHole{p, kDefaultDrill_mm});
+  for (const auto& [c, r] : L.circles[aama_number(AamaLayer::kDrillHoles)]) piece.drill_holes.push_back(DrillHole{c, 2 * r});
   detect_darts(piece);
 
   std::string qty = note({"QUANTITY", "QTY"});
