@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "geometry/body/body_mesh.h"
+#include "geometry/design/piece_renderer.h"
 #include "geometry/garment/garment.h"
 #include "geometry/pattern/pattern.h"
 #include "host/common/error.h"
@@ -31,5 +32,25 @@ namespace tp::host {
 [[nodiscard]] Status write_garment_files(const std::filesystem::path& dir, const std::string& stem,
                                          const geometry::Pattern& pattern, const geometry::Garment& garment,
                                          const geometry::BodyMesh& body, const std::string& body_stem);
+
+/// What write_textured_garment wrote.
+struct TexturedGarmentFiles {
+  std::string obj, mtl, texture;  ///< file names in the output folder
+  int texture_width_px = 0, texture_height_px = 0;
+  double texture_dpi = 0;         ///< resolution of the pieces in the texture
+};
+
+/// Largest side of the garment texture, pixels (what real-time viewers load without complaint).
+inline constexpr int kGarmentTextureMaxSidePx = 4096;
+
+/// The printed garment for 3D tools: every piece's print rendered at one resolution (at most
+/// `max_dpi`, lower when the pieces would not fit a kGarmentTextureMaxSidePx square), packed in
+/// shelves into `<stem>.png` (over white fabric, pHYs at that resolution), `<stem>.mtl` naming it
+/// as the diffuse map, and `<stem>.obj` whose texture coordinates point into it (normalised to
+/// [0, 1]; positions in mm, stated in the file). Fails (kIo) naming the file.
+[[nodiscard]] Result<TexturedGarmentFiles> write_textured_garment(const std::filesystem::path& dir, const std::string& stem,
+                                                                  const geometry::Pattern& pattern,
+                                                                  const geometry::Garment& garment,
+                                                                  const geometry::PieceRenderer& renderer, double max_dpi);
 
 }  // namespace tp::host

@@ -9,6 +9,7 @@
 #include "geometry/cutfile/svg_writer.h"
 #include "geometry/design/render_piece_image.h"
 #include "host/common/atomic_file.h"
+#include "host/pipeline/garment_files.h"
 #include "host/pipeline/internal/output_files.h"
 #include "host/pipeline/internal/pipeline_state.h"
 #include "rip/image/image_io.h"
@@ -49,6 +50,20 @@ Status stage_outputs(PipelineState& ps) {
     pieces.push_back(name);
   }
   ps.report["files"] = {{"marker", "marker.png"}, {"pieces", pieces}};
+
+  // The 3D garment again, now with its print: the pieces packed into one texture, OBJ + MTL.
+  if (ps.garment_is_3d && ps.garment) {
+    auto tex = write_textured_garment(out, "garment", ps.pattern, *ps.garment, *ps.renderer, ps.job.print.preview_dpi);
+    if (!tex) return fail(tex.error());
+    auto& files = ps.report["garment"]["files"];
+    files["obj"] = tex->obj;
+    files["mtl"] = tex->mtl;
+    files["texture"] = tex->texture;
+    files["obj_units"] = "mm";
+    files["texture_dpi"] = tex->texture_dpi;
+    files["texture_width_px"] = tex->texture_width_px;
+    files["texture_height_px"] = tex->texture_height_px;
+  }
 
   // Cut contours exactly where the pieces were printed on the roll.
   auto cut = geometry::make_cut_job(ps.pattern, ps.finishing, ps.roll);
