@@ -111,7 +111,10 @@ TEST_F(OutputReaders, TiffinfoSeesInkChannelsAtThePrintResolutionWithoutAlpha) {
   EXPECT_NE(r.output.find("Resolution: 150, 150 pixels/inch"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("Samples/Pixel: 4"), std::string::npos) << r.output;
   EXPECT_EQ(r.output.find("assoc-alpha"), std::string::npos) << r.output;
-  EXPECT_NE(r.output.find("cyan,magenta,yellow,black"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("Extra Samples"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("Photometric Interpretation: separated"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("InkSet: 1"), std::string::npos) << r.output;  // 1: CMYK
+  EXPECT_NE(r.output.find("Ink Names: cyan, magenta, yellow, black"), std::string::npos) << r.output;
 }
 
 // Validates a report against docs/schema/report.schema.json with python3-jsonschema.
