@@ -93,11 +93,11 @@ Status run_job(const Job& job, const RunOptions& options, const geometry::Cancel
   }
 
   report["finished"] = utc_now();
-  report["seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  report["wall_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   report["state"] = result ? "done" : result.error().code == ErrorCode::kCancelled ? "cancelled" : "failed";
   if (!result) report["error"] = result.error().message;
   if (auto st = write_report(options.out_dir, report); !st && result) result = st;
-  if (result) spdlog::info("job {} '{}': done in {:.1f} s", options.job_id, job.name, report["seconds"].get<double>());
+  if (result) spdlog::info("job {} '{}': done in {:.1f} s", options.job_id, job.name, report["wall_s"].get<double>());
   else spdlog::warn("job {} '{}': {}", options.job_id, job.name, result.error().message);
   return result;
 }

@@ -89,7 +89,7 @@ Status stage_marker(PipelineState& ps) {
                          {"length_mm", ps.roll.length_mm},
                          {"utilisation", ps.roll.utilisation},
                          {"budget", m.iterations > 0 ? nlohmann::json{{"iterations", m.iterations}}
-                                                     : nlohmann::json{{"seconds", m.time_limit_s}}},
+                                                     : nlohmann::json{{"time_limit_s", m.time_limit_s}}},
                          {"source", ps.stage_reused ? "plan" : "nested"},
                          {"markers", list}};
   ps.report["fabric_length_mm"] = ps.roll.length_mm;

@@ -85,6 +85,21 @@ Status stage_outputs(PipelineState& ps) {
     for (size_t i = 0; i < sewn.size(); ++i)
       if (!sewn[i]) warnings.push_back("piece '" + ps.pattern.pieces[i].name + "' is joined to no other piece by a stitch");
   }
+  size_t suggested = 0;
+  for (const nlohmann::json& src : ps.stitch_sources) suggested += src.value("source", "") == "suggested";
+  if (suggested > 0)
+    warnings.push_back(std::to_string(suggested) + " stitch(es) were suggested by `pattern suggest`, not given by the "
+                       "pattern or the job: check them before sewing");
+  if (ps.garment && !ps.garment_is_3d)
+    warnings.push_back("garment: the pieces are laid flat, not sewn on a body: print continuity is matched along the "
+                       "stitches in 2D only");
+  const nlohmann::json& report = ps.report;  // const: looking up a section must not add it
+  const nlohmann::json* checks = nullptr;
+  if (report.contains("garment") && report["garment"].contains("checks")) checks = &report["garment"]["checks"];
+  if (checks && checks->is_object() && checks->contains("unsewn_pieces") && (*checks)["unsewn_pieces"].is_array())
+    for (const nlohmann::json& name : (*checks)["unsewn_pieces"])
+      if (name.is_string())
+        warnings.push_back("garment: piece '" + name.get<std::string>() + "' hangs unsewn in the 3D garment");
   if (ps.job.print.transfer == "sublimation")
     warnings.push_back("print.transfer is sublimation: the printer lays the mirror image for transfer paper");
 

@@ -89,14 +89,22 @@ Status check_printer(const device::PrinterModel& model, const device::IdentifyMs
   return {};
 }
 
-nlohmann::json rip_json(const rip::RipStats& st) {
-  nlohmann::json drops = nlohmann::json::array();
+// Counts per named ink channel, in the printer model's ink order.
+template <class Counts>
+nlohmann::json per_ink(const Counts& counts, const device::PrinterModel& model) {
+  nlohmann::json out = nlohmann::json::object();
+  for (size_t c = 0; c < counts.size() && c < model.inks.size(); ++c) out[model.inks[c].name] = counts[c];
+  return out;
+}
+
+nlohmann::json rip_json(const rip::RipStats& st, const device::PrinterModel& model) {
+  std::vector<std::uint64_t> drops;
   for (const auto& d : st.drops) drops.push_back(d[1] + d[2] + d[3]);
-  return {{"width_px", st.width_px},          {"height_px", st.height_px},
-          {"area_m2", st.area_m2},            {"swaths", st.swaths},
-          {"swaths_sent", st.swaths_sent},    {"compression_ratio", st.compression_ratio},
-          {"drops_per_ink", drops},           {"threads", st.threads},
-          {"seconds", st.wall_s}};
+  return {{"width_px", st.width_px},       {"height_px", st.height_px},
+          {"area_m2", st.area_m2},         {"swaths", st.swaths},
+          {"compression_ratio", st.compression_ratio},
+          {"drops_per_ink", per_ink(drops, model)},
+          {"threads", st.threads},         {"wall_s", st.wall_s}};
 }
 
 // Print time and swath count before printing, from the marker and the printer model: the pass
@@ -188,13 +196,13 @@ Status stage_print(PipelineState& ps) {
     bool cancelled = stats.error().code == rip::ErrorCode::kCancelled || ps.cancel.cancelled();
     return fail(cancelled ? ErrorCode::kCancelled : ErrorCode::kPipeline, stats.error().message);
   }
-  ps.report["rip"] = rip_json(*stats);
+  ps.report["rip"] = rip_json(*stats, *model);
   if (auto st = swath_plan->finish(stats->swaths); !st) return st;
   ps.report["ink"] = ink_json(*stats, *model);
   ps.report["measured"] = {{"print_time_s", nullptr}, {"fabric_length_mm", nullptr}, {"swaths", stats->swaths}};
 
   nlohmann::json print = {{"printer", printer}, {"swaths_total", stats->swaths}, {"swaths_sent", stats->swaths_sent},
-                          {"swaths_acked", session ? acked : 0u}};
+                          {"swaths_acked", session ? nlohmann::json(acked) : nlohmann::json(nullptr)}};
   if (session) {
     // Feed the end of the roll past the cutter so the last cut cue fires.
     const std::int64_t end_um = std::llround(ps.roll.length_mm * 1000);
@@ -210,22 +218,22 @@ Status stage_print(PipelineState& ps) {
     print["reattached"] = ss.reattached;
     print["lost_job_resumes"] = ss.lost_job_resumes;
     print["printer_swaths_printed"] = result->report.swaths_printed;
-    print["feed_travel_um"] = result->report.feed_travel_um;
+    print["feed_travel_mm"] = static_cast<double>(result->report.feed_travel_um) / 1000.0;
     print["print_time_s"] = static_cast<double>(result->report.print_time_us) / 1e6;
     print["cues_fired"] = result->report.cues_fired;
-    print["drops_per_ink"] = result->report.drops_per_ink;
+    print["drops_per_ink"] = per_ink(result->report.drops_per_ink, *model);
     print["outcome"] = std::string(device::to_string(result->report.outcome));
     nlohmann::json cues = nlohmann::json::array();
     for (const auto& c : result->cues)
-      cues.push_back({{"kind", std::string(device::to_string(c.kind))}, {"position_um", c.position_um},
-                      {"fired", c.fired}, {"fired_at_um", c.fired_at_um}});
+      cues.push_back({{"kind", std::string(device::to_string(c.kind))},
+                      {"position_mm", static_cast<double>(c.position_um) / 1000.0},
+                      {"fired", c.fired},
+                      {"fired_at_mm", c.fired ? nlohmann::json(static_cast<double>(c.fired_at_um) / 1000.0) : nlohmann::json(nullptr)}});
     print["cues"] = cues;
     ps.report["measured"]["print_time_s"] = print["print_time_s"];
     ps.report["measured"]["fabric_length_mm"] = static_cast<double>(result->report.feed_travel_um) / 1000.0;
   }
   ps.report["print"] = print;
-  ps.report["swaths_sent"] = print["swaths_sent"];
-  ps.report["swaths_acked"] = print["swaths_acked"];
   return {};
 }
 

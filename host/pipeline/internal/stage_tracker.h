@@ -15,7 +15,7 @@ class StageTracker {
       : options_(options), cancel_(cancel), report_(report) {
     report_["stages"] = nlohmann::json::array();
     for (Stage s : kAllStages)
-      report_["stages"].push_back({{"stage", to_string(s)}, {"state", to_string(StageState::kFresh)}, {"seconds", 0.0}});
+      report_["stages"].push_back({{"stage", to_string(s)}, {"state", to_string(StageState::kFresh)}, {"wall_s", nullptr}});
   }
 
   /// Runs `body` (returning Status) as stage `s`; a cancelled token fails the stage as cancelled.
@@ -47,7 +47,9 @@ class StageTracker {
     for (auto& e : report_["stages"]) {
       if (e["stage"] == to_string(s)) {
         e["state"] = to_string(state);
-        e["seconds"] = secs;
+        // Wall time once the stage has run; null while it has not (fresh, running, skipped).
+        const bool ran = state != StageState::kFresh && state != StageState::kRunning && state != StageState::kSkipped;
+        e["wall_s"] = ran ? nlohmann::json(secs) : nlohmann::json(nullptr);
       }
     }
     if (options_.on_stage) options_.on_stage(s, state, secs);

@@ -85,8 +85,8 @@ TEST(Determinism, TheSameJobUnderCpuLoadGivesTheSameFilesByteForByte) {
   }
   EXPECT_TRUE(differ.empty()) << "differ under load: " << json(differ).dump();
   RecordProperty("files_compared", static_cast<int>(files.size()));
-  RecordProperty("seconds_idle", std::to_string(idle["seconds"].get<double>()));
-  RecordProperty("seconds_loaded", std::to_string(loaded["seconds"].get<double>()));
+  RecordProperty("seconds_idle", std::to_string(idle["wall_s"].get<double>()));
+  RecordProperty("seconds_loaded", std::to_string(loaded["wall_s"].get<double>()));
   EXPECT_EQ(idle["garment"]["strain_mean"], loaded["garment"]["strain_mean"]);
   EXPECT_EQ(idle["marker"]["length_mm"], loaded["marker"]["length_mm"]);
   EXPECT_EQ(idle["rip"]["drops_per_ink"], loaded["rip"]["drops_per_ink"]);

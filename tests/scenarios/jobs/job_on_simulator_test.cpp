@@ -60,7 +60,7 @@ TEST(JobOnSimulator, TheFabricShowsTheMarkerAndEverySwathAndCueArrived) {
   for (const json& cue : p["cues"]) EXPECT_TRUE(cue["fired"].get<bool>()) << cue.dump();
   EXPECT_EQ(p["cues_fired"].get<size_t>(), p["cues"].size());
   // Fabric fed at least the marker's length.
-  EXPECT_GE(p["feed_travel_um"].get<double>() / 1000.0, rep["marker"]["length_mm"].get<double>() - 1.0);
+  EXPECT_GE(p["feed_travel_mm"].get<double>(), rep["marker"]["length_mm"].get<double>() - 1.0);
 
   // The fabric, in cells of about 1 cm, shows the marker: same light and dark cells. The fabric
   // is drops through the simulator's ink model, the marker the contone plan, so a budget.
