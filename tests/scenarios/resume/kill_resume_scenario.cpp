@@ -240,7 +240,9 @@ Outcome collect(const PrintRoom& room, bool synthetic = false) {
     o.swaths_printed = c.value("swaths_printed", 0u);
     for (const auto& ink : printer["printer"]["inks"]) o.drops.push_back(c["drops_per_ink"].value(ink.get<std::string>(), 0ull));
   }
-  auto in = OIIO::ImageInput::open((dir / "fabric.tif").string());
+  OIIO::ImageSpec raw_config;
+  raw_config.attribute("oiio:RawColor", 1);  // separated CMYK: the ink samples, not RGB
+  auto in = OIIO::ImageInput::open((dir / "fabric.tif").string(), &raw_config);
   if (!in) return o;
   const OIIO::ImageSpec& spec = in->spec();
   o.width = spec.width;
