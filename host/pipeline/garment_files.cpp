@@ -92,37 +92,46 @@ Result<TexturedGarmentFiles> write_textured_garment(const std::filesystem::path&
     int x = 0, y = 0;
   };
   std::vector<Island> islands;
-  double island_area = 0;
-  for (const geometry::GarmentPiece& gp : garment.pieces) {
-    if (gp.piece < 0 || gp.piece >= renderer.piece_count()) continue;
-    auto img = geometry::render_piece_image(renderer, gp.piece, dpi);
-    if (img.image.width_px <= 0 || img.image.height_px <= 0) continue;
-    island_area += static_cast<double>(img.image.width_px + kAtlasGapPx) * (img.image.height_px + kAtlasGapPx);
-    islands.push_back({gp.piece, std::move(img)});
-  }
-  std::vector<size_t> order(islands.size());
-  std::iota(order.begin(), order.end(), size_t{0});
-  std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
-    return islands[a].image.image.height_px > islands[b].image.image.height_px;
-  });
-  int width = 1;
-  for (const Island& is : islands) width = std::max(width, is.image.image.width_px);
-  width = std::min(kGarmentTextureMaxSidePx, std::max(width, static_cast<int>(std::ceil(std::sqrt(island_area / kAtlasFill)))));
-  int x = 0, y = 0, shelf = 0, used_w = 1;
-  for (size_t i : order) {
-    Island& is = islands[i];
-    if (x > 0 && x + is.image.image.width_px > width) {
-      x = 0;
-      y += shelf + kAtlasGapPx;
-      shelf = 0;
+  int used_w = 1, height = 1;
+  // Shelves can leave the texture taller than wide: then the pieces go in again, smaller.
+  for (int attempt = 0; attempt < 4; ++attempt) {
+    islands.clear();
+    double island_area = 0;
+    for (const geometry::GarmentPiece& gp : garment.pieces) {
+      if (gp.piece < 0 || gp.piece >= renderer.piece_count()) continue;
+      auto img = geometry::render_piece_image(renderer, gp.piece, dpi);
+      if (img.image.width_px <= 0 || img.image.height_px <= 0) continue;
+      island_area += static_cast<double>(img.image.width_px + kAtlasGapPx) * (img.image.height_px + kAtlasGapPx);
+      islands.push_back({gp.piece, std::move(img)});
     }
-    is.x = x;
-    is.y = y;
-    x += is.image.image.width_px + kAtlasGapPx;
-    used_w = std::max(used_w, is.x + is.image.image.width_px);
-    shelf = std::max(shelf, is.image.image.height_px);
+    std::vector<size_t> order(islands.size());
+    std::iota(order.begin(), order.end(), size_t{0});
+    std::stable_sort(order.begin(), order.end(), [&](size_t a, size_t b) {
+      return islands[a].image.image.height_px > islands[b].image.image.height_px;
+    });
+    int width = 1;
+    for (const Island& is : islands) width = std::max(width, is.image.image.width_px);
+    width = std::min(kGarmentTextureMaxSidePx,
+                     std::max(width, static_cast<int>(std::ceil(std::sqrt(island_area / kAtlasFill)))));
+    int x = 0, y = 0, shelf = 0;
+    used_w = 1;
+    for (size_t i : order) {
+      Island& is = islands[i];
+      if (x > 0 && x + is.image.image.width_px > width) {
+        x = 0;
+        y += shelf + kAtlasGapPx;
+        shelf = 0;
+      }
+      is.x = x;
+      is.y = y;
+      x += is.image.image.width_px + kAtlasGapPx;
+      used_w = std::max(used_w, is.x + is.image.image.width_px);
+      shelf = std::max(shelf, is.image.image.height_px);
+    }
+    height = std::max(1, y + shelf);
+    if (height <= kGarmentTextureMaxSidePx) break;
+    dpi = std::floor(dpi * 0.97 * std::sqrt(static_cast<double>(kGarmentTextureMaxSidePx) / height) * 100) / 100;
   }
-  const int height = std::max(1, y + shelf);
 
   geometry::ImageRgba8 atlas;
   atlas.width_px = used_w;
