@@ -62,8 +62,8 @@ struct ChannelImage8 {
 /// TIFF compression for written separations.
 enum class TiffCompression { kNone, kPackBits, kDeflate };
 
-/// Writes a multi-channel TIFF (one sample per channel, no alpha, min-is-black: a sample is the
-/// amount of that channel). `bits_per_sample` is 8, or 1, 2 or 4 for screened data, in which case
+/// Writes a multi-channel separated TIFF (one sample per channel, no alpha, a sample is the amount
+/// of that channel; InkSet and InkNames as TiffBandWriter writes them). `bits_per_sample` is 8, or 1, 2 or 4 for screened data, in which case
 /// the samples hold values 0 .. 2^bits - 1. Fails (kIo) naming the file, (kInvalidArgument) on
 /// inconsistent sizes or an unsupported bit depth.
 [[nodiscard]] Status write_tiff(const std::filesystem::path& path, const ChannelImage8& image,

@@ -14,15 +14,17 @@
 
 namespace tp::rip {
 
-/// A TIFF (BigTIFF when the raw data could pass 3.5 GB) open for writing top to bottom: strips are
-/// compressed and written as rows arrive, the directory when it closes. Min-is-black (a sample is
-/// the ink amount), channel names in the ImageDescription ("channels=cyan,magenta,...").
+/// A TIFF (BigTIFF when the raw data could pass 3.5 GB) open for writing top to bottom with libtiff:
+/// strips are compressed and written as rows arrive, the directory when it closes. Separated
+/// (Photometric 5: a sample is the ink amount), InkSet CMYK when the channels are cyan, magenta,
+/// yellow, black in that order and multi-ink otherwise, one InkNames entry per channel, no
+/// ExtraSamples; the names also in the ImageDescription ("channels=cyan,magenta,...").
 /// Samples given to write_rows are 8-bit, interleaved per pixel, holding 0 .. 2^bits - 1.
 class TiffBandWriter {
  public:
   /// Opens `path` for a width x height image with the named channels, recording the resolution
-  /// when dpi_x and dpi_y are positive; BigTIFF when large or `force_bigtiff`. Fails (kIo) naming the file, (kInvalidArgument) like
-  /// write_tiff.
+  /// when dpi_x and dpi_y are positive; BigTIFF when large or `force_bigtiff`. Fails (kIo) naming the
+  /// file, (kInvalidArgument) like write_tiff or for an empty channel name or one holding a comma.
   [[nodiscard]] static Result<std::unique_ptr<TiffBandWriter>> open(const std::filesystem::path& path, int width_px,
                                                                     std::int64_t height_px,
                                                                     const std::vector<std::string>& channel_names,
