@@ -230,8 +230,30 @@ TEST_F(RollFrame, TheCutFileLiesOnThePrintedPieceWithinHalfAMillimetre) {
   };
   const double pixel_mm = kMmPerInch / fabric.dpi, reach_mm = 2.5;
   double worst = 0;
-  int samples = 0, skipped = 0;
+  int samples = 0, skipped = 0, unprinted = 0;
   for (const PlacedPiece& pp : cut_file_pieces(*out_ / "cut.dxf")) {
+    // The piece image (the contone print of the piece) is the mask of where ink is expected: a
+    // sparse design (strokes) leaves most of the cut line on fabric that is meant to stay blank.
+    const fs::path image = *out_ / "pieces" / (pp.piece.name + ".png");
+    ASSERT_TRUE(fs::exists(image)) << image;
+    const Raster piece(image);
+    ASSERT_GT(piece.dpi, 0) << image << " has no pHYs resolution";
+    geometry::Box2 box;
+    for (Vec2 v : geometry::outline(pp.piece)) box.add(v);
+    const double piece_px_mm = kMmPerInch / piece.dpi;
+    // Roll mm -> piece image pixel, as render_piece_image lays it out (2 px margin, y up).
+    const Affine2 roll_to_px =
+        Affine2{piece_px_mm, 0, box.min.x - 2 * piece_px_mm, 0, -piece_px_mm, box.max.y + 2 * piece_px_mm}
+            .inverse()
+            .compose(pp.to_roll.inverse());
+    auto design_inked = [&](Vec2 roll_mm) {
+      const Vec2 q = roll_to_px.apply(roll_mm);
+      const int x = static_cast<int>(std::floor(q.x)), y = static_cast<int>(std::floor(q.y));
+      if (x < 0 || y < 0 || x >= piece.width || y >= piece.height) return false;
+      std::vector<float> px(4);
+      piece.buf.getpixel(x, y, px.data(), 4);
+      return px[3] > 0.99f && grey(px) < 0.98;  // opaque and not white
+    };
     std::vector<Vec2> cut;
     for (Vec2 v : geometry::outline(pp.piece)) cut.push_back(pp.to_roll.apply(v));
     const double orient = geometry::signed_area(cut) > 0 ? 1 : -1;
@@ -244,6 +266,15 @@ TEST_F(RollFrame, TheCutFileLiesOnThePrintedPieceWithinHalfAMillimetre) {
       // Away from the segment's ends, where the normal may run into the outline's next stretch.
       for (double s = 2; s < len - 2; s += 3) {
         const Vec2 p = a + u * s;
+        // Only where the design puts ink on the whole stretch just inside the cut line (half a
+        // piece-image pixel in, to 1.5 mm in, over the 2 mm window the fabric is searched along).
+        bool expected = true;
+        for (double t = 0.5 * piece_px_mm; expected && t <= 1.5; t += piece_px_mm / 2)
+          for (double k = -1; expected && k <= 1; k += piece_px_mm / 2) expected = design_inked(p - n * t + u * k);
+        if (!expected) {
+          ++unprinted;
+          continue;
+        }
         // The printed edge along the normal: from an inked cut-line point outwards to the first
         // blank pixel, or from a blank one inwards to the first ink.
         // Ink is sought along a 2 mm stretch parallel to the cut line: a light tone screens
@@ -262,7 +293,7 @@ TEST_F(RollFrame, TheCutFileLiesOnThePrintedPieceWithinHalfAMillimetre) {
           }
         const double in_mm = on ? 0 : edge_mm, out_mm = on ? edge_mm : 0;
         if (edge_mm < 0) {
-          ++skipped;  // ink (or none) all along the reach: an unprinted stretch or a neighbour
+          ++skipped;  // ink (or none) all along the reach: the print misses the design or a neighbour
           continue;
         }
         if (std::max(in_mm, out_mm) > worst && std::getenv("TP_DEBUG_ROLL_FRAME"))
@@ -272,10 +303,12 @@ TEST_F(RollFrame, TheCutFileLiesOnThePrintedPieceWithinHalfAMillimetre) {
       }
     }
   }
-  std::printf("cut line vs printed edge: max %.3f mm over %d samples (%d on unprinted stretches)\n", worst, samples,
-              skipped);
+  std::printf(
+      "cut line vs printed edge: max %.3f mm over %d samples (%d without an edge in reach, %d where the "
+      "design leaves the cut line blank)\n",
+      worst, samples, skipped, unprinted);
   RecordProperty("cut_vs_print_max_mm", std::to_string(worst));
-  EXPECT_GT(samples, 200);
+  EXPECT_GT(samples, 60);  // a sparse design (top-strokes) keeps ink on the cut line in few places
   EXPECT_LT(skipped, samples / 4);
   EXPECT_LT(worst, 0.5);
 }
