@@ -20,6 +20,7 @@ TP_PACKAGES=(
   python3-ezdxf python3-jsonschema pngcheck librsvg2-bin libtiff-tools
   libtiff-dev   # separated TIFFs (InkSet, InkNames) for separations and the simulator's fabric
   assimp-utils  # independent OBJ/MTL reader for the garment.obj test
+  libjs-three chromium chromium-driver python3-selenium  # browser viewer check of garment.obj
 )
 
 tp_log() { printf '\033[1m==> %s\033[0m\n' "$*" >&2; }
