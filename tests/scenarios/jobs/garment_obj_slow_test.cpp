@@ -1,6 +1,7 @@
 // tests/scenarios/jobs/garment_obj_slow_test.cpp: a 3D job's garment.obj opened by assimp (an
 // independent reader): its material's diffuse map is garment.png, every piece is textured, the UVs
-// lie in [0, 1], the units are stated; the report names the files, the units and the texture.
+// lie in [0, 1], the units are stated; the report names the files, the units and the texture. Then
+// three.js in headless Chromium (readers/check_garment_viewer.py) shows the garment with the print.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -54,6 +55,20 @@ TEST(GarmentObj, AssimpOpensTheGarmentWithItsPrintAsTextureAndUvsInTheUnitSquare
   EXPECT_EQ(f["units_comment"], "yes");
   std::printf("assimp: %s meshes, %s faces, uv %s..%s, texture %s\n", f["meshes"].c_str(), f["faces"].c_str(),
               f["uv_min"].c_str(), f["uv_max"].c_str(), f["textures"].c_str());
+
+  // A browser viewer: three.js's OBJLoader and MTLLoader in headless Chromium, served on loopback.
+  // The screenshot shows the texture's colours on the garment, not a blank page or untextured grey.
+  ASSERT_EQ(run_command({"sh", "-c", "command -v chromium && command -v chromedriver"}).exit_code, 0)
+      << "chromium missing (scripts/lib.sh TP_PACKAGES installs chromium, chromium-driver, python3-selenium, libjs-three)";
+  auto b = run_command({"/usr/bin/python3", (source_dir() / "tests/scenarios/jobs/readers/check_garment_viewer.py").string(),
+                        out.string(), (out / "garment-viewer.png").string()});
+  ASSERT_EQ(b.exit_code, 0) << b.output;
+  auto bf = facts(b.output);
+  EXPECT_EQ(bf["viewer_title"], "ready meshes=" + f["meshes"] + " textured=" + f["meshes"]) << b.output;
+  EXPECT_EQ(bf["console_errors"], "0") << b.output;
+  EXPECT_EQ(bf["shows_print"], "yes") << b.output;
+  std::printf("browser: garment %s of the view, %s colours, hue overlap with garment.png %s\n",
+              bf["garment_share"].c_str(), bf["distinct_colours"].c_str(), bf["hue_overlap"].c_str());
 
   // The texture is a valid PNG at the resolution the report gives.
   std::ifstream rin(out / "report.json");
