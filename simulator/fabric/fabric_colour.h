@@ -8,7 +8,8 @@
 #include <vector>
 
 #include "simulator/common/error.h"
-#include "simulator/fabric/colorimetry.h"
+#include "device/colour/colorimetry.h"
+#include "simulator/fabric/fabric_preset.h"
 
 namespace tp::sim {
 

@@ -6,9 +6,23 @@
 #include <optional>
 #include <string_view>
 
-#include "simulator/fabric/colorimetry.h"
+#include "device/colour/colorimetry.h"
 
 namespace tp::sim {
+
+// The colour science lives in device/colour (shared with the host's proof checks).
+using device::band_nm;
+using device::delta_e_2000;
+using device::kBands;
+using device::kD50White;
+using device::kFirstBand_nm;
+using device::Lab;
+using device::lab_to_xyz;
+using device::Spectrum;
+using device::spectrum_to_xyz;
+using device::Xyz;
+using device::xyz_to_lab;
+using device::xyz_to_srgb8;
 
 struct FabricPreset {
   std::string_view name;

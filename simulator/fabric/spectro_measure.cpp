@@ -10,7 +10,8 @@
 #include <vector>
 
 #include "device/model/cgats.h"
-#include "simulator/fabric/colorimetry.h"
+#include "device/colour/colorimetry.h"
+#include "simulator/fabric/fabric_preset.h"
 
 namespace tp::sim {
 

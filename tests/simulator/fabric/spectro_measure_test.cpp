@@ -8,7 +8,8 @@
 #include <fstream>
 
 #include "device/model/cgats.h"
-#include "simulator/fabric/colorimetry.h"
+#include "device/colour/colorimetry.h"
+#include "simulator/fabric/fabric_preset.h"
 #include "tests/support/paths.h"
 
 namespace tp::sim {

@@ -1,10 +1,10 @@
-// tests/simulator/fabric/colorimetry_test.cpp: CIEDE2000 against Sharma's published pairs, the
+// tests/device/colour/colorimetry_test.cpp: CIEDE2000 against Sharma's published pairs, the
 // D50 white, Lab round trips and sRGB white.
-#include "simulator/fabric/colorimetry.h"
+#include "device/colour/colorimetry.h"
 
 #include <gtest/gtest.h>
 
-namespace tp::sim {
+namespace tp::device {
 namespace {
 
 TEST(Colorimetry, DeltaE2000MatchesSharmaWuDalalPairs) {
@@ -39,6 +39,13 @@ TEST(Colorimetry, PerfectDiffuserIsD50WhiteAndSrgbWhite) {
   for (int k = 0; k < 3; ++k) EXPECT_GE(rgb[k], 254);
 }
 
+TEST(Colorimetry, SrgbDecodesToWhatItEncodes) {
+  for (const auto& rgb : {std::array<std::uint8_t, 3>{255, 255, 255}, {200, 30, 90}, {12, 128, 250}}) {
+    const auto back = xyz_to_srgb8(srgb8_to_xyz(rgb[0], rgb[1], rgb[2]));
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(back[k], rgb[k], 1) << k;
+  }
+}
+
 TEST(Colorimetry, LabRoundTripsAndNeutralGreyStaysNeutral) {
   for (const Lab c : {Lab{50, 20, -30}, Lab{5, 0, 0}, Lab{90, -40, 60}}) {
     const Lab back = xyz_to_lab(lab_to_xyz(c));
@@ -55,4 +62,4 @@ TEST(Colorimetry, LabRoundTripsAndNeutralGreyStaysNeutral) {
 }
 
 }  // namespace
-}  // namespace tp::sim
+}  // namespace tp::device

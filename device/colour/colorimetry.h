@@ -1,11 +1,11 @@
-// simulator/fabric/colorimetry.h: spectra to CIE XYZ (D50, 2 degree observer), CIELAB, CIEDE2000
-// and sRGB, for the simulator's colorimetric printer and its spectrophotometer.
+// device/colour/colorimetry.h: spectra to CIE XYZ (D50, 2 degree observer), CIELAB, CIEDE2000
+// and sRGB, shared by the simulator's colorimetric printer and the host's proof checks.
 #pragma once
 
 #include <array>
 #include <cstdint>
 
-namespace tp::sim {
+namespace tp::device {
 
 /// Spectral sampling of the colour model: 400 .. 700 nm in 20 nm steps.
 inline constexpr int kBands = 16;
@@ -38,7 +38,10 @@ Xyz lab_to_xyz(const Lab& lab);
 /// CIEDE2000 colour difference (kL = kC = kH = 1).
 double delta_e_2000(const Lab& a, const Lab& b);
 
+/// 8-bit sRGB to D50 XYZ (the inverse of xyz_to_srgb8 inside the sRGB gamut).
+Xyz srgb8_to_xyz(std::uint8_t r, std::uint8_t g, std::uint8_t b);
+
 /// D50 XYZ to 8-bit sRGB (Bradford-adapted to D65, clipped, sRGB transfer curve).
 std::array<std::uint8_t, 3> xyz_to_srgb8(const Xyz& xyz);
 
-}  // namespace tp::sim
+}  // namespace tp::device

@@ -1,11 +1,11 @@
-// simulator/fabric/colorimetry.cpp: the CIE observer, D50, CIELAB, CIEDE2000 and sRGB encoding.
-#include "simulator/fabric/colorimetry.h"
+// device/colour/colorimetry.cpp: the CIE observer, D50, CIELAB, CIEDE2000 and sRGB encoding.
+#include "device/colour/colorimetry.h"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 
-namespace tp::sim {
+namespace tp::device {
 
 namespace {
 
@@ -69,7 +69,16 @@ double srgb_encode(double v) {
   return v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1.0 / 2.4) - 0.055;
 }
 
+double srgb_decode(double v) { return v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4); }
+
 }  // namespace
+
+Xyz srgb8_to_xyz(std::uint8_t r8, std::uint8_t g8, std::uint8_t b8) {
+  // Linear sRGB to D50 XYZ, Bradford-adapted (Lindbloom's matrix, the inverse of the one below).
+  const double r = srgb_decode(r8 / 255.0), g = srgb_decode(g8 / 255.0), b = srgb_decode(b8 / 255.0);
+  return {0.4360747 * r + 0.3850649 * g + 0.1430804 * b, 0.2225045 * r + 0.7168786 * g + 0.0606169 * b,
+          0.0139322 * r + 0.0971045 * g + 0.7141733 * b};
+}
 
 Xyz spectrum_to_xyz(const Spectrum& r) {
   const Weights& w = weights();
@@ -143,4 +152,4 @@ std::array<std::uint8_t, 3> xyz_to_srgb8(const Xyz& c) {
           static_cast<std::uint8_t>(std::lround(255.0 * srgb_encode(b)))};
 }
 
-}  // namespace tp::sim
+}  // namespace tp::device
