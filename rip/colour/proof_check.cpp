@@ -1,0 +1,157 @@
+// rip/colour/proof_check.cpp: cell averaging of both images, white estimate, CIEDE2000 statistics.
+#include "rip/colour/proof_check.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace tp::rip {
+
+namespace {
+
+using device::Lab;
+using device::Xyz;
+
+struct Cells {
+  int nx = 0, ny = 0;
+  std::vector<double> x, y, z;   // summed XYZ
+  std::vector<std::uint32_t> n;  // samples
+  std::vector<std::uint8_t> blank_px;  // design only: the cell holds a white pixel
+
+  void init(int w, int h) {
+    nx = w;
+    ny = h;
+    const auto size = static_cast<std::size_t>(w) * h;
+    x.assign(size, 0);
+    y.assign(size, 0);
+    z.assign(size, 0);
+    n.assign(size, 0);
+    blank_px.assign(size, 0);
+  }
+  Xyz mean(std::size_t i) const { return {x[i] / n[i], y[i] / n[i], z[i] / n[i]}; }
+};
+
+struct Raster {
+  OIIO::ImageSpec spec;
+  std::vector<float> px;
+  double px_per_mm = 0;
+};
+
+Result<Raster> read(const std::filesystem::path& path, int channels_min) {
+  auto in = OIIO::ImageInput::open(path.string());
+  if (!in) return fail(ErrorCode::kImage, path.string() + ": cannot read: " + OIIO::geterror());
+  Raster r;
+  r.spec = in->spec();
+  if (r.spec.nchannels < channels_min)
+    return fail(ErrorCode::kImage, path.string() + ": needs " + std::to_string(channels_min) + " channels");
+  const float dpi = r.spec.get_float_attribute("XResolution", 0);
+  std::string unit = r.spec.get_string_attribute("ResolutionUnit", "in");
+  if (!(dpi > 0)) return fail(ErrorCode::kImage, path.string() + ": no resolution (pHYs / XResolution)");
+  r.px_per_mm = (unit == "cm" ? dpi / 10.0 : dpi / 25.4);
+  r.px.resize(static_cast<std::size_t>(r.spec.width) * r.spec.height * 3);
+  if (!in->read_image(0, 0, 0, 3, OIIO::TypeDesc::FLOAT, r.px.data()))
+    return fail(ErrorCode::kImage, path.string() + ": " + in->geterror());
+  return r;
+}
+
+// Adds every pixel of `r` to the cell its centre lies in; `to_xyz` converts one pixel.
+template <class F>
+void accumulate(const Raster& r, double cell_mm, Cells& c, F&& to_xyz) {
+  const double cell_px = cell_mm * r.px_per_mm;
+  for (int py = 0; py < r.spec.height; ++py) {
+    const int cy = static_cast<int>((py + 0.5) / cell_px);
+    if (cy >= c.ny) break;
+    for (int px = 0; px < r.spec.width; ++px) {
+      const int cx = static_cast<int>((px + 0.5) / cell_px);
+      if (cx >= c.nx) break;
+      const std::size_t i = static_cast<std::size_t>(cy) * c.nx + cx;
+      const float* p = &r.px[(static_cast<std::size_t>(py) * r.spec.width + px) * 3];
+      bool white = false;
+      const Xyz v = to_xyz(p, white);
+      c.x[i] += v.x;
+      c.y[i] += v.y;
+      c.z[i] += v.z;
+      ++c.n[i];
+      if (white) c.blank_px[i] = 1;
+    }
+  }
+}
+
+}  // namespace
+
+Result<ProofCheckResult> check_proof(const std::filesystem::path& design, const std::filesystem::path& fabric_lab,
+                                     double cell_mm) {
+  if (!(cell_mm >= 0.1 && cell_mm <= 50)) return fail(ErrorCode::kInvalidArgument, "proof check: cell must be 0.1..50 mm");
+  auto d = read(design, 3);
+  if (!d) return fail(d.error());
+  auto f = read(fabric_lab, 3);
+  if (!f) return fail(f.error());
+  // The common extent of both, in whole cells.
+  const double w_mm = std::min(d->spec.width / d->px_per_mm, f->spec.width / f->px_per_mm);
+  const double h_mm = std::min(d->spec.height / d->px_per_mm, f->spec.height / f->px_per_mm);
+  Cells dc, fc;
+  const int nx = static_cast<int>(w_mm / cell_mm), ny = static_cast<int>(h_mm / cell_mm);
+  if (nx < 3 || ny < 3) return fail(ErrorCode::kInvalidArgument, "proof check: images smaller than 3 x 3 cells");
+  dc.init(nx, ny);
+  fc.init(nx, ny);
+  accumulate(*d, cell_mm, dc, [](const float* p, bool& white) {
+    auto q = [](float v) { return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.f, 1.f) * 255.f)); };
+    const std::uint8_t r = q(p[0]), g = q(p[1]), b = q(p[2]);
+    white = r >= 250 && g >= 250 && b >= 250;
+    return device::srgb8_to_xyz(r, g, b);
+  });
+  accumulate(*f, cell_mm, fc, [](const float* p, bool& white) {
+    white = false;
+    return device::lab_to_xyz({p[0], p[1], p[2]});
+  });
+
+  // Printed: the cell and its neighbours hold no white design pixel. Blank: all of them white.
+  ProofCheckResult out;
+  out.cell_mm = cell_mm;
+  std::vector<std::size_t> printed;
+  Xyz white_sum;
+  for (int y = 1; y + 1 < ny; ++y)
+    for (int x = 1; x + 1 < nx; ++x) {
+      bool any_blank = false, all_blank = true;
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dx = -1; dx <= 1; ++dx) {
+          const std::size_t j = static_cast<std::size_t>(y + dy) * nx + (x + dx);
+          any_blank = any_blank || dc.blank_px[j];
+          const Xyz m = dc.mean(j);
+          all_blank = all_blank && dc.blank_px[j] && m.y > 0.98;
+        }
+      const std::size_t i = static_cast<std::size_t>(y) * nx + x;
+      if (!dc.n[i] || !fc.n[i]) continue;
+      if (!any_blank) printed.push_back(i);
+      if (all_blank) {
+        const Xyz m = fc.mean(i);
+        white_sum.x += m.x;
+        white_sum.y += m.y;
+        white_sum.z += m.z;
+        ++out.blank_cells;
+      }
+    }
+  if (printed.empty()) return fail(ErrorCode::kInvalidArgument, design.string() + ": no printed area to compare");
+  if (!out.blank_cells) return fail(ErrorCode::kInvalidArgument, design.string() + ": no unprinted area to measure the fabric white on");
+  const Xyz w{white_sum.x / out.blank_cells, white_sum.y / out.blank_cells, white_sum.z / out.blank_cells};
+  out.fabric_white = device::xyz_to_lab(w);
+  std::vector<double> de;
+  de.reserve(printed.size());
+  for (std::size_t i : printed) {
+    const Xyz fm = fc.mean(i);
+    const Xyz rel{fm.x * device::kD50White.x / w.x, fm.y * device::kD50White.y / w.y, fm.z * device::kD50White.z / w.z};
+    de.push_back(device::delta_e_2000(device::xyz_to_lab(dc.mean(i)), device::xyz_to_lab(rel)));
+  }
+  std::sort(de.begin(), de.end());
+  double sum = 0;
+  for (double v : de) sum += v;
+  out.cells = de.size();
+  out.mean_de00 = sum / static_cast<double>(de.size());
+  out.p95_de00 = de[std::min(de.size() - 1, static_cast<std::size_t>(0.95 * static_cast<double>(de.size())))];
+  out.max_de00 = de.back();
+  return out;
+}
+
+}  // namespace tp::rip

@@ -1,0 +1,32 @@
+// rip/colour/proof_check.h: the independent colour check: a design (or soft proof) image in
+// sRGB against the printed fabric's CIELAB image (printsim's fabric-lab.tif, or a scan), CIEDE2000
+// over the printed area.
+#pragma once
+
+#include <cstddef>
+#include <filesystem>
+
+#include "device/colour/colorimetry.h"
+#include "rip/common/error.h"
+
+namespace tp::rip {
+
+struct ProofCheckResult {
+  std::size_t cells = 0;            ///< printed cells compared (interior of the print: edges left out)
+  std::size_t blank_cells = 0;      ///< unprinted cells the fabric white was measured on
+  double cell_mm = 0;
+  double mean_de00 = 0, p95_de00 = 0, max_de00 = 0;
+  device::Lab fabric_white;         ///< absolute, as measured on the blank cells
+};
+
+/// Compares `design` (8-bit sRGB PNG/TIFF with its resolution; white = unprinted) with
+/// `fabric_lab` (3 x float L*, a*, b* D50 with its resolution), both in the roll frame from the
+/// same origin. Both are box-averaged in XYZ into square cells of `cell_mm` (the descreening);
+/// a cell counts as printed when it and its eight neighbours hold no white design pixel. The
+/// fabric is taken media-relative (its blank cells' colour is the design's white), as a
+/// relative-colorimetric proof is. Fails with kImage naming the file, or kInvalidArgument when
+/// no cell is printed or none is blank.
+[[nodiscard]] Result<ProofCheckResult> check_proof(const std::filesystem::path& design,
+                                                   const std::filesystem::path& fabric_lab, double cell_mm = 1.0);
+
+}  // namespace tp::rip
