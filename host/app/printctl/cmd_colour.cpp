@@ -1,0 +1,46 @@
+// host/app/printctl/cmd_colour.cpp: colour commands: `printctl proof-check <out>` compares a
+// job's design (marker.png) with its printed fabric's colour (fabric-lab.tif).
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include "host/app/printctl/commands.h"
+#include "rip/colour/proof_check.h"
+
+namespace tp::host::cli {
+
+namespace {
+
+struct ProofCheckArgs {
+  std::string out;
+  std::string design = "marker.png";
+  std::string fabric = "fabric-lab.tif";
+  double cell_mm = 1.0;
+};
+
+}  // namespace
+
+void register_colour_commands(CLI::App& app) {
+  auto a = std::make_shared<ProofCheckArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "proof-check", "CIEDE2000 between a job's design and its printed fabric over the printed area (key=value)");
+  cmd->add_option("out", a->out, "A job's output folder (printctl run --out)")->required();
+  cmd->add_option("--design", a->design, "Design image inside it (sRGB, white = unprinted)")->capture_default_str();
+  cmd->add_option("--fabric", a->fabric, "Printed fabric colour inside it (CIELAB TIFF)")->capture_default_str();
+  cmd->add_option("--cell-mm", a->cell_mm, "Descreening cell size")->check(CLI::Range(0.1, 50.0))->capture_default_str();
+  cmd->callback([a] {
+    const std::filesystem::path dir(a->out);
+    auto r = rip::check_proof(dir / a->design, dir / a->fabric, a->cell_mm);
+    if (!r) {
+      std::fprintf(stderr, "printctl proof-check: %s\n", r.error().what().c_str());
+      throw CLI::RuntimeError(1);
+    }
+    std::printf("cells=%zu\ncell_mm=%.2f\nblank_cells=%zu\nde00_mean=%.3f\nde00_p95=%.3f\nde00_max=%.3f\n"
+                "fabric_white_lab=%.2f,%.2f,%.2f\n",
+                r->cells, r->cell_mm, r->blank_cells, r->mean_de00, r->p95_de00, r->max_de00, r->fabric_white.l,
+                r->fabric_white.a, r->fabric_white.b);
+  });
+}
+
+}  // namespace tp::host::cli
