@@ -1,7 +1,7 @@
 // rip/colour/proof_check.cpp: cell averaging of both images, white estimate, CIEDE2000 statistics.
 #include "rip/colour/proof_check.h"
 
-#include <OpenImageIO/imageio.h>
+#include "rip/colour/lab_image.h"
 
 #include <algorithm>
 #include <cmath>
@@ -33,41 +33,18 @@ struct Cells {
   Xyz mean(std::size_t i) const { return {x[i] / n[i], y[i] / n[i], z[i] / n[i]}; }
 };
 
-struct Raster {
-  OIIO::ImageSpec spec;
-  std::vector<float> px;
-  double px_per_mm = 0;
-};
-
-Result<Raster> read(const std::filesystem::path& path, int channels_min) {
-  auto in = OIIO::ImageInput::open(path.string());
-  if (!in) return fail(ErrorCode::kImage, path.string() + ": cannot read: " + OIIO::geterror());
-  Raster r;
-  r.spec = in->spec();
-  if (r.spec.nchannels < channels_min)
-    return fail(ErrorCode::kImage, path.string() + ": needs " + std::to_string(channels_min) + " channels");
-  const float dpi = r.spec.get_float_attribute("XResolution", 0);
-  std::string unit = r.spec.get_string_attribute("ResolutionUnit", "in");
-  if (!(dpi > 0)) return fail(ErrorCode::kImage, path.string() + ": no resolution (pHYs / XResolution)");
-  r.px_per_mm = (unit == "cm" ? dpi / 10.0 : dpi / 25.4);
-  r.px.resize(static_cast<std::size_t>(r.spec.width) * r.spec.height * 3);
-  if (!in->read_image(0, 0, 0, 3, OIIO::TypeDesc::FLOAT, r.px.data()))
-    return fail(ErrorCode::kImage, path.string() + ": " + in->geterror());
-  return r;
-}
-
 // Adds every pixel of `r` to the cell its centre lies in; `to_xyz` converts one pixel.
 template <class F>
-void accumulate(const Raster& r, double cell_mm, Cells& c, F&& to_xyz) {
+void accumulate(const Image3f& r, double cell_mm, Cells& c, F&& to_xyz) {
   const double cell_px = cell_mm * r.px_per_mm;
-  for (int py = 0; py < r.spec.height; ++py) {
+  for (int py = 0; py < r.height_px; ++py) {
     const int cy = static_cast<int>((py + 0.5) / cell_px);
     if (cy >= c.ny) break;
-    for (int px = 0; px < r.spec.width; ++px) {
+    for (int px = 0; px < r.width_px; ++px) {
       const int cx = static_cast<int>((px + 0.5) / cell_px);
       if (cx >= c.nx) break;
       const std::size_t i = static_cast<std::size_t>(cy) * c.nx + cx;
-      const float* p = &r.px[(static_cast<std::size_t>(py) * r.spec.width + px) * 3];
+      const float* p = &r.px[(static_cast<std::size_t>(py) * r.width_px + px) * 3];
       bool white = false;
       const Xyz v = to_xyz(p, white);
       c.x[i] += v.x;
@@ -84,13 +61,13 @@ void accumulate(const Raster& r, double cell_mm, Cells& c, F&& to_xyz) {
 Result<ProofCheckResult> check_proof(const std::filesystem::path& design, const std::filesystem::path& fabric_lab,
                                      double cell_mm) {
   if (!(cell_mm >= 0.1 && cell_mm <= 50)) return fail(ErrorCode::kInvalidArgument, "proof check: cell must be 0.1..50 mm");
-  auto d = read(design, 3);
+  auto d = read_image3f(design);
   if (!d) return fail(d.error());
-  auto f = read(fabric_lab, 3);
+  auto f = read_image3f(fabric_lab);
   if (!f) return fail(f.error());
   // The common extent of both, in whole cells.
-  const double w_mm = std::min(d->spec.width / d->px_per_mm, f->spec.width / f->px_per_mm);
-  const double h_mm = std::min(d->spec.height / d->px_per_mm, f->spec.height / f->px_per_mm);
+  const double w_mm = std::min(d->width_px / d->px_per_mm, f->width_px / f->px_per_mm);
+  const double h_mm = std::min(d->height_px / d->px_per_mm, f->height_px / f->px_per_mm);
   Cells dc, fc;
   const int nx = static_cast<int>(w_mm / cell_mm), ny = static_cast<int>(h_mm / cell_mm);
   if (nx < 3 || ny < 3) return fail(ErrorCode::kInvalidArgument, "proof check: images smaller than 3 x 3 cells");
