@@ -1,11 +1,13 @@
-// host/app/printctl/cmd_colour.cpp: colour commands: `printctl proof-check <out>` compares a
-// job's design (marker.png) with its printed fabric's colour (fabric-lab.tif).
+// host/app/printctl/cmd_colour.cpp: colour commands: `printctl calibrate` makes a calibration
+// set; `printctl proof-check <out>` compares a job's design (marker.png) with its printed
+// fabric's colour (fabric-lab.tif).
 #include <cstdio>
 #include <filesystem>
 #include <memory>
 #include <string>
 
 #include "host/app/printctl/commands.h"
+#include "host/calibration/calibrate.h"
 #include "rip/colour/proof_check.h"
 
 namespace tp::host::cli {
@@ -22,6 +24,32 @@ struct ProofCheckArgs {
 }  // namespace
 
 void register_colour_commands(CLI::App& app) {
+  auto c = std::make_shared<CalibrateOptions>();
+  auto printer = std::make_shared<std::string>(), measurements = std::make_shared<std::string>();
+  CLI::App* cal = app.add_subcommand("calibrate", "Print and measure a profiling chart, build the ICC profile (ArgyllCMS)");
+  cal->add_option("--printer", *printer, "Printer model file (.tpm); the built-in model otherwise");
+  cal->add_option("--fabric", c->fabric, "Fabric preset loaded in the printer")
+      ->check(CLI::IsMember({"cotton", "polyester-satin", "silk"}))
+      ->capture_default_str();
+  cal->add_option("--out", c->out, "Calibration set folder to write")->required();
+  cal->add_option("--measurements", *measurements, "A real instrument's .ti3 of the chart: build from it, print nothing");
+  cal->add_option("--patches", c->patches, "Profiling chart patches (targen -f)")->check(CLI::Range(800, 5000))->capture_default_str();
+  cal->add_option("--dpi", c->dpi, "Chart print resolution")->check(CLI::Range(50, 1200))->capture_default_str();
+  cal->add_option("--aperture-mm", c->aperture_mm, "Simulated instrument aperture")->capture_default_str();
+  cal->add_option("--noise", c->noise_de, "Simulated instrument noise per L*, a*, b*")->capture_default_str();
+  cal->add_option("--quality", c->quality, "colprof quality: l, m, h")->check(CLI::IsMember({"l", "m", "h"}))->capture_default_str();
+  cal->callback([c, printer, measurements] {
+    if (!printer->empty()) c->printer_model = *printer;
+    if (!measurements->empty()) c->measurements = *measurements;
+    auto r = calibrate(*c);
+    if (!r) {
+      std::fprintf(stderr, "printctl calibrate: %s\n", r.error().what().c_str());
+      throw CLI::RuntimeError(1);
+    }
+    std::printf("patches=%d\nchart_area_m2=%.4f\nseconds=%.1f\nfit_de00_mean=%.3f\nfit_de00_max=%.3f\nprofile=%s\n",
+                r->patches, r->chart_area_m2, r->seconds, r->fit_mean_de00, r->fit_max_de00, r->profile.c_str());
+  });
+
   auto a = std::make_shared<ProofCheckArgs>();
   CLI::App* cmd = app.add_subcommand(
       "proof-check", "CIEDE2000 between a job's design and its printed fabric over the printed area (key=value)");
