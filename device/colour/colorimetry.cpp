@@ -101,6 +101,18 @@ Xyz lab_to_xyz(const Lab& c) {
   return {kD50White.x * lab_f_inv(fx), kD50White.y * lab_f_inv(fy), kD50White.z * lab_f_inv(fz)};
 }
 
+Xyz adapt_bradford(const Xyz& c, const Xyz& from, const Xyz& to) {
+  // Cone-like responses, scaled per cone by the white ratio, and back.
+  auto cone = [](const Xyz& v) {
+    return std::array<double, 3>{0.8951 * v.x + 0.2664 * v.y - 0.1614 * v.z, -0.7502 * v.x + 1.7135 * v.y + 0.0367 * v.z,
+                                 0.0389 * v.x - 0.0685 * v.y + 1.0296 * v.z};
+  };
+  const auto s = cone(from), d = cone(to), v = cone(c);
+  const double r = v[0] * d[0] / s[0], g = v[1] * d[1] / s[1], b = v[2] * d[2] / s[2];
+  return {0.9869929 * r - 0.1470543 * g + 0.1599627 * b, 0.4323053 * r + 0.5183603 * g + 0.0492912 * b,
+          -0.0085287 * r + 0.0400428 * g + 0.9684867 * b};
+}
+
 double delta_e_2000(const Lab& p, const Lab& q) {
   // Sharma, Wu and Dalal (2005), the reference formulation.
   constexpr double pi = std::numbers::pi;

@@ -35,6 +35,10 @@ Xyz spectrum_to_xyz(const Spectrum& reflectance);
 Lab xyz_to_lab(const Xyz& xyz);
 Xyz lab_to_xyz(const Lab& lab);
 
+/// Chromatic adaptation (Bradford, as ICC profiles adapt a media white to D50): the colour `c`
+/// seen under `from_white` as it would look under `to_white`.
+Xyz adapt_bradford(const Xyz& c, const Xyz& from_white, const Xyz& to_white);
+
 /// CIEDE2000 colour difference (kL = kC = kH = 1).
 double delta_e_2000(const Lab& a, const Lab& b);
 

@@ -1,6 +1,9 @@
 // rip/colour/proof_check.cpp: cell averaging of both images, white estimate, CIEDE2000 statistics.
 #include "rip/colour/proof_check.h"
 
+#include <lcms2.h>
+
+#include "rip/colour/internal/lcms_handles.h"
 #include "rip/colour/lab_image.h"
 
 #include <algorithm>
@@ -59,7 +62,20 @@ void accumulate(const Image3f& r, double cell_mm, Cells& c, F&& to_xyz) {
 }  // namespace
 
 Result<ProofCheckResult> check_proof(const std::filesystem::path& design, const std::filesystem::path& fabric_lab,
-                                     double cell_mm) {
+                                     double cell_mm, const std::filesystem::path& printer_profile) {
+  // Lab -> printer -> Lab, relative colorimetric: how close the printer gets to each colour.
+  lcms::Transform to_dev, from_dev;
+  cmsUInt32Number dev_fmt = 0;
+  if (!printer_profile.empty()) {
+    lcms::Profile prof(cmsOpenProfileFromFile(printer_profile.string().c_str(), "r"));
+    if (!prof) return fail(ErrorCode::kColour, printer_profile.string() + ": not a readable ICC profile");
+    lcms::Profile lab(cmsCreateLab4Profile(nullptr));
+    const int nch = static_cast<int>(cmsChannelsOf(cmsGetColorSpace(prof.get())));
+    dev_fmt = FLOAT_SH(1) | CHANNELS_SH(nch) | BYTES_SH(0);
+    to_dev.reset(cmsCreateTransform(lab.get(), TYPE_Lab_DBL, prof.get(), dev_fmt, INTENT_RELATIVE_COLORIMETRIC, cmsFLAGS_NOCACHE));
+    from_dev.reset(cmsCreateTransform(prof.get(), dev_fmt, lab.get(), TYPE_Lab_DBL, INTENT_RELATIVE_COLORIMETRIC, cmsFLAGS_NOCACHE));
+    if (!to_dev || !from_dev) return fail(ErrorCode::kColour, printer_profile.string() + ": lcms2 cannot build the gamut round trip");
+  }
   if (!(cell_mm >= 0.1 && cell_mm <= 50)) return fail(ErrorCode::kInvalidArgument, "proof check: cell must be 0.1..50 mm");
   auto d = read_image3f(design);
   if (!d) return fail(d.error());
@@ -116,11 +132,29 @@ Result<ProofCheckResult> check_proof(const std::filesystem::path& design, const 
   out.fabric_white = device::xyz_to_lab(w);
   std::vector<double> de;
   de.reserve(printed.size());
+  double oog_worst = 0;
   for (std::size_t i : printed) {
+    const Lab want = device::xyz_to_lab(dc.mean(i));
+    if (to_dev) {
+      double dev[16] = {};
+      cmsCIELab in{want.l, want.a, want.b}, back{};
+      cmsDoTransform(to_dev.get(), &in, dev, 1);
+      cmsDoTransform(from_dev.get(), dev, &back, 1);
+      const double gap = device::delta_e_2000(want, {back.L, back.a, back.b});
+      if (gap > kGamutTolerance_de00) {
+        ++out.out_of_gamut_cells;
+        oog_worst = std::max(oog_worst, gap);
+        continue;
+      }
+    }
     const Xyz fm = fc.mean(i);
-    const Xyz rel{fm.x * device::kD50White.x / w.x, fm.y * device::kD50White.y / w.y, fm.z * device::kD50White.z / w.z};
-    de.push_back(device::delta_e_2000(device::xyz_to_lab(dc.mean(i)), device::xyz_to_lab(rel)));
+    // Media-relative the ICC way: Bradford from the fabric white to D50, scaled to Y = 1.
+    const Xyz rel = device::adapt_bradford({fm.x / w.y, fm.y / w.y, fm.z / w.y}, {w.x / w.y, 1.0, w.z / w.y}, device::kD50White);
+    de.push_back(device::delta_e_2000(want, device::xyz_to_lab(rel)));
   }
+  out.out_of_gamut_share = static_cast<double>(out.out_of_gamut_cells) / static_cast<double>(printed.size());
+  out.out_of_gamut_worst_de00 = oog_worst;
+  if (de.empty()) return fail(ErrorCode::kInvalidArgument, design.string() + ": every printed cell is out of the printer's gamut");
   std::sort(de.begin(), de.end());
   double sum = 0;
   for (double v : de) sum += v;

@@ -79,7 +79,9 @@ Status FabricPreview::flush() {
   // The PNG is media-relative (the bare fabric shows as sRGB white, as a relative-colorimetric
   // proof does); the CIELAB file keeps the absolute colour.
   const Xyz& w = model_.fabric_white();
-  auto relative = [&](const Xyz& c) { return Xyz{c.x * kD50White.x / w.x, c.y * kD50White.y / w.y, c.z * kD50White.z / w.z}; };
+  auto relative = [&](const Xyz& c) {
+    return device::adapt_bradford({c.x / w.y, c.y / w.y, c.z / w.y}, {w.x / w.y, 1.0, w.z / w.y}, kD50White);
+  };
   const Lab white_lab = xyz_to_lab(w);
   const auto white_rgb = xyz_to_srgb8(kD50White);
   for (std::uint32_t px = 0; px < out_width_; ++px) {

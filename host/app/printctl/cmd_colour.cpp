@@ -19,6 +19,7 @@ struct ProofCheckArgs {
   std::string design = "marker.png";
   std::string fabric = "fabric-lab.tif";
   double cell_mm = 1.0;
+  std::string profile;
 };
 
 }  // namespace
@@ -57,17 +58,18 @@ void register_colour_commands(CLI::App& app) {
   cmd->add_option("--design", a->design, "Design image inside it (sRGB, white = unprinted)")->capture_default_str();
   cmd->add_option("--fabric", a->fabric, "Printed fabric colour inside it (CIELAB TIFF)")->capture_default_str();
   cmd->add_option("--cell-mm", a->cell_mm, "Descreening cell size")->check(CLI::Range(0.1, 50.0))->capture_default_str();
+  cmd->add_option("--profile", a->profile, "Printer profile (a calibration set's): leave out-of-gamut colours out, count them");
   cmd->callback([a] {
     const std::filesystem::path dir(a->out);
-    auto r = rip::check_proof(dir / a->design, dir / a->fabric, a->cell_mm);
+    auto r = rip::check_proof(dir / a->design, dir / a->fabric, a->cell_mm, a->profile);
     if (!r) {
       std::fprintf(stderr, "printctl proof-check: %s\n", r.error().what().c_str());
       throw CLI::RuntimeError(1);
     }
     std::printf("cells=%zu\ncell_mm=%.2f\nblank_cells=%zu\nde00_mean=%.3f\nde00_p95=%.3f\nde00_max=%.3f\n"
-                "fabric_white_lab=%.2f,%.2f,%.2f\n",
+                "fabric_white_lab=%.2f,%.2f,%.2f\nout_of_gamut_share=%.4f\nout_of_gamut_worst_de00=%.2f\n",
                 r->cells, r->cell_mm, r->blank_cells, r->mean_de00, r->p95_de00, r->max_de00, r->fabric_white.l,
-                r->fabric_white.a, r->fabric_white.b);
+                r->fabric_white.a, r->fabric_white.b, r->out_of_gamut_share, r->out_of_gamut_worst_de00);
   });
 }
 

@@ -46,6 +46,14 @@ TEST(Colorimetry, SrgbDecodesToWhatItEncodes) {
   }
 }
 
+TEST(Colorimetry, BradfordTakesTheWhiteToTheWhite) {
+  const Xyz paper{0.85, 0.88, 0.68};
+  const Xyz w = adapt_bradford(paper, paper, kD50White);
+  EXPECT_NEAR(w.x, kD50White.x, 1e-6);
+  EXPECT_NEAR(w.y, kD50White.y, 1e-6);
+  EXPECT_NEAR(w.z, kD50White.z, 1e-6);
+}
+
 TEST(Colorimetry, LabRoundTripsAndNeutralGreyStaysNeutral) {
   for (const Lab c : {Lab{50, 20, -30}, Lab{5, 0, 0}, Lab{90, -40, 60}}) {
     const Lab back = xyz_to_lab(lab_to_xyz(c));
