@@ -117,7 +117,19 @@ Result<ProofCheckResult> check_proof(const std::filesystem::path& design, const 
         }
       const std::size_t i = static_cast<std::size_t>(y) * nx + x;
       if (!dc.n[i] || !fc.n[i]) continue;
-      if (!any_blank) printed.push_back(i);
+      // Colour edges in the design (stripes, outlines) are left out: there a fraction of a cell
+      // of registration is a large difference that says nothing about colour.
+      bool flat = true;
+      if (!any_blank) {
+        const Lab centre = device::xyz_to_lab(dc.mean(i));
+        for (int dy = -1; dy <= 1 && flat; ++dy)
+          for (int dx = -1; dx <= 1 && flat; ++dx) {
+            const std::size_t j = static_cast<std::size_t>(y + dy) * nx + (x + dx);
+            flat = device::delta_e_2000(centre, device::xyz_to_lab(dc.mean(j))) <= kFlatDesign_de00;
+          }
+        if (!flat) ++out.edge_cells;
+      }
+      if (!any_blank && flat) printed.push_back(i);
       if (all_blank) {
         const Xyz m = fc.mean(i);
         white_sum.x += m.x;

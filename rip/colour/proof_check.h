@@ -14,6 +14,7 @@ namespace tp::rip {
 struct ProofCheckResult {
   std::size_t cells = 0;            ///< printed cells compared (interior of the print: edges left out)
   std::size_t blank_cells = 0;      ///< unprinted cells the fabric white was measured on
+  std::size_t edge_cells = 0;       ///< printed cells left out because the design changes colour there
   double cell_mm = 0;
   double mean_de00 = 0, p95_de00 = 0, max_de00 = 0;
   device::Lab fabric_white;         ///< absolute, as measured on the blank cells
@@ -25,13 +26,17 @@ struct ProofCheckResult {
   double out_of_gamut_worst_de00 = 0;  ///< design against its closest reproducible colour
 };
 
+/// Largest design difference between a cell and its neighbours for the cell to be compared.
+inline constexpr double kFlatDesign_de00 = 3.0;
+
 /// Round-trip error above which a design colour counts as out of the printer's gamut.
 inline constexpr double kGamutTolerance_de00 = 1.0;
 
 /// Compares `design` (8-bit sRGB PNG/TIFF with its resolution; white = unprinted) with
 /// `fabric_lab` (3 x float L*, a*, b* D50 with its resolution), both in the roll frame from the
 /// same origin. Both are box-averaged in XYZ into square cells of `cell_mm` (the descreening);
-/// a cell counts as printed when it and its eight neighbours hold no white design pixel. The
+/// a cell counts as printed when it and its eight neighbours hold no white design pixel, and is
+/// compared when none of those neighbours differs from it by more than kFlatDesign_de00. The
 /// fabric is taken media-relative (its blank cells' colour is the design's white), as a
 /// relative-colorimetric proof is. Fails with kImage naming the file, or kInvalidArgument when
 /// no cell is printed or none is blank.
