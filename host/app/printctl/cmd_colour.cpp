@@ -8,7 +8,10 @@
 
 #include "host/app/printctl/commands.h"
 #include "host/calibration/calibrate.h"
+#include "rip/colour/lab_image.h"
 #include "rip/colour/proof_check.h"
+#include "rip/colour/soft_proof.h"
+#include "rip/image/image_io.h"
 
 namespace tp::host::cli {
 
@@ -49,6 +52,33 @@ void register_colour_commands(CLI::App& app) {
     }
     std::printf("patches=%d\nchart_area_m2=%.4f\nseconds=%.1f\nfit_de00_mean=%.3f\nfit_de00_max=%.3f\nprofile=%s\n",
                 r->patches, r->chart_area_m2, r->seconds, r->fit_mean_de00, r->fit_max_de00, r->profile.c_str());
+  });
+
+  auto sp = std::make_shared<ProofCheckArgs>();
+  CLI::App* soft = app.add_subcommand(
+      "soft-proof", "Render a job's marker.png as the calibrated printer reproduces it (marker-proof.png, -gamut.png)");
+  soft->add_option("out", sp->out, "A job's output folder")->required();
+  soft->add_option("--design", sp->design, "Design image inside it")->capture_default_str();
+  soft->add_option("--profile", sp->profile, "Printer profile (a calibration set's profile.icc)")->required();
+  soft->callback([sp] {
+    const std::filesystem::path dir(sp->out);
+    auto fail_with = [](const std::string& m) {
+      std::fprintf(stderr, "printctl soft-proof: %s\n", m.c_str());
+      throw CLI::RuntimeError(1);
+    };
+    auto design = rip::read_image(dir / sp->design);
+    if (!design) fail_with(design.error().what());
+    geometry::ImageRgba8 proof, overlay;
+    auto s = rip::soft_proof(*design, sp->profile, proof, &overlay);
+    if (!s) fail_with(s.error().what());
+    const std::string stem = std::filesystem::path(sp->design).stem().string();
+    // The design's own resolution carries over (marker.png has pHYs).
+    double dpi = 0;
+    if (auto r = rip::read_image3f(dir / sp->design)) dpi = r->px_per_mm * 25.4;
+    for (const auto& [img, name] : {std::pair{&proof, stem + "-proof.png"}, std::pair{&overlay, stem + "-gamut.png"}})
+      if (auto w = rip::write_png(dir / name, *img, rip::PngChannels::kRgba, dpi); !w) fail_with(w.error().what());
+    std::printf("printed_pixels=%zu\nout_of_gamut_share=%.4f\nworst_de00=%.2f\nproof=%s\n", s->printed_pixels,
+                s->out_of_gamut_share, s->worst_de00, (dir / (stem + "-proof.png")).c_str());
   });
 
   auto a = std::make_shared<ProofCheckArgs>();
