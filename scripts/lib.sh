@@ -18,6 +18,7 @@ TP_PACKAGES=(
   python3
   clang libclang-rt-14-dev
   python3-ezdxf python3-jsonschema pngcheck librsvg2-bin libtiff-tools
+  argyll  # printctl calibrate: targen, colprof, profcheck (docs/colour.md)
 )
 
 tp_log() { printf '\033[1m==> %s\033[0m\n' "$*" >&2; }
