@@ -21,6 +21,7 @@ TP_PACKAGES=(
   libtiff-dev   # separated TIFFs (InkSet, InkNames) for separations and the simulator's fabric
   assimp-utils  # independent OBJ/MTL reader for the garment.obj test
   libjs-three chromium chromium-driver python3-selenium  # browser viewer check of garment.obj
+  argyll  # printctl calibrate: targen, colprof, profcheck (docs/colour.md)
 )
 
 tp_log() { printf '\033[1m==> %s\033[0m\n' "$*" >&2; }

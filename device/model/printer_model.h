@@ -11,6 +11,8 @@ namespace tp::device {
 struct InkChannel {
   std::string name;
   double head_offset_x_mm = 0;   ///< offset of this ink's nozzle row from the carriage origin
+  /// Optical density of this ink relative to its nominal colour (simulator colour model; 1 = nominal).
+  double strength = 1;
 };
 
 /// Where the carriage's nozzle column 0 lies, seen from the printed face with the marker's
@@ -47,6 +49,19 @@ struct PrinterModel {
   CarriageOrigin carriage_origin = CarriageOrigin::kLeft;
   /// Volume of one drop at each level 1 .. 2^bits_per_pixel - 1, picolitres (ink use in the report).
   std::vector<double> drop_volume_pl{4, 8, 12};
+
+  // Colour on the fabric (the simulator's colorimetric printer, docs/colour.md).
+  /// Fabric preset the printer is loaded with: "cotton", "polyester-satin" or "silk".
+  std::string fabric = "cotton";
+  /// Yule-Nielsen n of the mixing model; 0 = the fabric preset's own.
+  double yule_nielsen_n = 0;
+  /// Share of a pixel one drop of each level covers once it has spread, 0..1 per level 1 ..
+  /// 2^bits_per_pixel - 1; empty = from the drop volumes (area grows as volume^(2/3)) and the
+  /// fabric's spread.
+  std::vector<double> drop_coverage;
 };
+
+/// The fabric presets the colour model knows, in the order documented.
+inline constexpr const char* kFabricPresets[] = {"cotton", "polyester-satin", "silk"};
 
 }  // namespace tp::device

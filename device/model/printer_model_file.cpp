@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -115,6 +116,17 @@ Status validate_printer_model(const PrinterModel& m) {
                                      std::to_string(m.drop_volume_pl.size()));
   for (double v : m.drop_volume_pl)
     if (!(v > 0 && v <= 1000)) return bad("drop_volume_pl", "volumes must be in (0, 1000] pL");
+  if (std::find(std::begin(kFabricPresets), std::end(kFabricPresets), m.fabric) == std::end(kFabricPresets))
+    return bad("fabric", "'" + m.fabric + "' is not a preset (cotton, polyester-satin, silk)");
+  if (!(m.yule_nielsen_n == 0 || (m.yule_nielsen_n >= 1 && m.yule_nielsen_n <= 10)))
+    return bad("yule_nielsen_n", "must be 0 (the fabric's) or 1..10");
+  if (!m.drop_coverage.empty() && m.drop_coverage.size() != m.drop_volume_pl.size())
+    return bad("drop_coverage", "needs one coverage per drop level (" + std::to_string(m.drop_volume_pl.size()) +
+                                    "), got " + std::to_string(m.drop_coverage.size()));
+  for (double c : m.drop_coverage)
+    if (!(c > 0 && c <= 1)) return bad("drop_coverage", "coverages must be in (0, 1]");
+  for (const auto& ink : m.inks)
+    if (!(ink.strength >= 0.05 && ink.strength <= 5)) return bad("ink_strength", "'" + ink.name + "' must be 0.05..5");
   return {};
 }
 
@@ -126,6 +138,7 @@ Result<PrinterModel> parse_printer_model(std::string_view text, std::string_view
   m.inks.clear();
   bool header_seen = false;
   std::set<std::string> seen;
+  std::map<std::string, double> strengths;
   std::size_t line_no = 0;
   while (!text.empty()) {
     const std::size_t nl = text.find('\n');
@@ -199,6 +212,29 @@ Result<PrinterModel> parse_printer_model(std::string_view text, std::string_view
         rest = sp == std::string_view::npos ? std::string_view{} : trim(rest.substr(sp));
       }
       if (m.drop_volume_pl.empty()) return bad("1..255 volumes in (0, 1000] pL separated by spaces");
+    } else if (key == "drop_coverage") {
+      // "drop_coverage = 0.5 0.8 1": share of a pixel each drop level covers once spread.
+      for (std::string_view rest = val; !rest.empty();) {
+        const std::size_t sp = rest.find_first_of(" \t");
+        if (!parse_double(rest.substr(0, sp), 1e-6, 1, d) || m.drop_coverage.size() >= 255)
+          return bad("1..255 coverages in (0, 1] separated by spaces");
+        m.drop_coverage.push_back(d);
+        rest = sp == std::string_view::npos ? std::string_view{} : trim(rest.substr(sp));
+      }
+      if (m.drop_coverage.empty()) return bad("1..255 coverages in (0, 1] separated by spaces");
+    } else if (key == "fabric") {
+      if (std::find(std::begin(kFabricPresets), std::end(kFabricPresets), val) == std::end(kFabricPresets))
+        return bad("a fabric preset: cotton, polyester-satin or silk");
+      m.fabric = std::string(val);
+    } else if (key == "yule_nielsen_n") {
+      if (!parse_double(val, 0, 10, d) || (d != 0 && d < 1)) return bad("0 (the fabric's) or a number in 1..10");
+      m.yule_nielsen_n = d;
+    } else if (key == "ink_strength") {
+      // "ink_strength = <ink> <factor>": applied once every ink line is read.
+      const std::size_t sp = val.find_first_of(" \t");
+      if (sp == std::string_view::npos || !parse_double(trim(val.substr(sp)), 0.05, 5, d))
+        return bad("'<ink name> <factor in 0.05..5>'");
+      if (!strengths.emplace(std::string(val.substr(0, sp)), d).second) return bad("each ink's strength once");
     } else if (key == "protocol_version") {
       if (!parse_int(val, 1, 65535, i)) return bad("an integer in 1..65535");
       m.protocol_version = static_cast<std::uint16_t>(i);
@@ -222,6 +258,11 @@ Result<PrinterModel> parse_printer_model(std::string_view text, std::string_view
     if (!seen.count(required)) return fail(ErrorCode::kParse, src + ": required key '" + required + "' missing");
   if (m.inks.empty()) return fail(ErrorCode::kParse, src + ": no 'ink' lines; a printer needs at least one ink");
   if (!seen.count("drop_volume_pl")) m.drop_volume_pl = default_drop_volumes_pl(m.bits_per_pixel);
+  for (const auto& [name, factor] : strengths) {
+    auto it = std::find_if(m.inks.begin(), m.inks.end(), [&](const InkChannel& c) { return c.name == name; });
+    if (it == m.inks.end()) return fail(ErrorCode::kParse, src + ": key 'ink_strength': no ink '" + name + "'");
+    it->strength = factor;
+  }
   if (auto s = validate_printer_model(m); !s) return fail(ErrorCode::kParse, src + ": " + s.error().message);
   return m;
 }
@@ -262,6 +303,15 @@ std::string format_printer_model(const PrinterModel& m) {
   for (double v : m.drop_volume_pl) o << " " << fmt_double(v);
   o << "\n";
   for (const auto& ink : m.inks) o << "ink = " << ink.name << " " << fmt_double(ink.head_offset_x_mm) << "\n";
+  o << "fabric = " << m.fabric << "\n";
+  if (m.yule_nielsen_n != 0) o << "yule_nielsen_n = " << fmt_double(m.yule_nielsen_n) << "\n";
+  if (!m.drop_coverage.empty()) {
+    o << "drop_coverage =";
+    for (double c : m.drop_coverage) o << " " << fmt_double(c);
+    o << "\n";
+  }
+  for (const auto& ink : m.inks)
+    if (ink.strength != 1) o << "ink_strength = " << ink.name << " " << fmt_double(ink.strength) << "\n";
   return o.str();
 }
 

@@ -118,6 +118,8 @@ struct PrintSpec {
   std::string screen = "blue-noise";                  ///< "blue-noise", "error-diffusion"
   int levels = 4;                                     ///< drop levels incl. none: 2 or 4
   std::optional<std::filesystem::path> icc_profile;
+  std::optional<std::filesystem::path> calibration;          ///< a calibration set's calibration.json
+  std::optional<std::filesystem::path> calibration_profile;  ///< its profile (docs/colour.md)
   double ink_limit_pct = 280;
   bool separations_tiff = false;
   int preview_dpi = 50;

@@ -1,6 +1,8 @@
 // host/job/manifest.cpp: job.json schema: every field typed, ranged, unit-checked and located.
 #include "host/job/manifest.h"
 
+#include "host/job/calibration_set.h"
+
 #include <fstream>
 #include <sstream>
 
@@ -205,7 +207,7 @@ void read_marker(FieldReader m, MarkerSpec& s) {
 
 void read_print(FieldReader p, const JobPackage* pkg, PrintSpec& s) {
   p.reject_unknown({"printer", "printer_model", "dpi", "passes", "bidirectional", "screen", "levels", "icc_profile",
-                    "ink_limit_pct", "separations_tiff", "preview_dpi", "transfer"});
+                    "ink_limit_pct", "separations_tiff", "preview_dpi", "transfer", "calibration"});
   if (auto v = p.choice("transfer", false, {"direct", "sublimation"})) s.transfer = *v;
   if (auto v = p.choice("printer", false, {"sim", "usb"})) s.printer = *v;
   read_asset(p, "printer_model", false, pkg, s.printer_model);
@@ -221,6 +223,11 @@ void read_print(FieldReader p, const JobPackage* pkg, PrintSpec& s) {
     s.levels = *v;
   }
   read_asset(p, "icc_profile", false, pkg, s.icc_profile);
+  read_asset(p, "calibration", false, pkg, s.calibration);
+  if (s.calibration && pkg) {
+    if (auto set = load_calibration_set(*s.calibration)) s.calibration_profile = set->profile;
+    else p.problems().add(p.pointer_of("calibration"), set.error().message);
+  }
   if (auto v = p.number("ink_limit_pct", false, 100, 400)) s.ink_limit_pct = *v;
   if (auto v = p.boolean("separations_tiff", false)) s.separations_tiff = *v;
   if (auto v = p.integer("preview_dpi", false, 5, 300)) s.preview_dpi = *v;

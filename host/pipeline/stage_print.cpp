@@ -25,6 +25,7 @@ rip::RipSettings rip_settings(const PipelineState& ps) {
   s.screen = p.screen == "error-diffusion" ? rip::ScreenKind::kErrorDiffusion : rip::ScreenKind::kBlueNoise;
   s.drop_levels = p.levels == 2 ? 2 : 0;
   if (p.icc_profile) s.profile_path = *p.icc_profile;
+  if (p.calibration_profile) s.calibration_profile = *p.calibration_profile;
   s.ink_limit_percent = p.ink_limit_pct;
   s.first_swath_index = static_cast<std::uint32_t>(std::max<std::int64_t>(0, ps.options.resume_after_swath + 1));
   if (p.separations_tiff) s.separations.screened_tiff = ps.options.out_dir / "separations.tif";

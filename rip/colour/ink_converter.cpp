@@ -256,8 +256,31 @@ Result<InkConverter> InkConverter::create(const InkConverterSettings& s) {
   const cmsUInt32Number ink_dbl = FLOAT_SH(1) | CHANNELS_SH(t->channels) | BYTES_SH(0);
   // Unoptimised transforms evaluate the profile's own tables, not an lcms2 precalculated grid.
   const cmsUInt32Number flags = cmsFLAGS_BLACKPOINTCOMPENSATION | cmsFLAGS_NOOPTIMIZE | cmsFLAGS_NOCACHE;
-  lcms::Transform to_ink16(cmsCreateTransform(srgb.get(), TYPE_RGB_16, t->profile.get(), ink16, intent, flags));
-  t->exact.reset(cmsCreateTransform(srgb.get(), TYPE_RGB_DBL, t->profile.get(), ink_dbl, intent, flags));
+  lcms::Transform to_ink16, exact;
+  if (s.calibration_profile.empty()) {
+    to_ink16.reset(cmsCreateTransform(srgb.get(), TYPE_RGB_16, t->profile.get(), ink16, intent, flags));
+    exact.reset(cmsCreateTransform(srgb.get(), TYPE_RGB_DBL, t->profile.get(), ink_dbl, intent, flags));
+  } else {
+    // sRGB -> calibration profile (as output: the printer's RGB that gives the colour) -> the
+    // separation the chart was printed with (those RGB values entered as sRGB) -> inks.
+    const std::string cname = s.calibration_profile.string();
+    lcms::Profile cal(cmsOpenProfileFromFile(cname.c_str(), "r"));
+    if (!cal) return fail(ErrorCode::kColour, cname + ": not a readable ICC profile");
+    if (cmsGetDeviceClass(cal.get()) != cmsSigOutputClass || cmsGetColorSpace(cal.get()) != cmsSigRgbData)
+      return fail(ErrorCode::kColour, cname + ": a calibration profile must be an RGB output profile");
+    lcms::Profile srgb_again(cmsCreate_sRGBProfile());
+    cmsHPROFILE chain[4] = {srgb.get(), cal.get(), srgb_again.get(), t->profile.get()};
+    cmsUInt32Number intents[4] = {INTENT_RELATIVE_COLORIMETRIC, INTENT_RELATIVE_COLORIMETRIC, intent, intent};
+    cmsBool bpc[4] = {0, 0, 1, 1};
+    cmsFloat64Number adapt[4] = {1, 1, 1, 1};
+    const cmsUInt32Number chain_flags = cmsFLAGS_NOOPTIMIZE | cmsFLAGS_NOCACHE;
+    to_ink16.reset(cmsCreateExtendedTransform(nullptr, 4, chain, bpc, intents, adapt, nullptr, 0, TYPE_RGB_16, ink16,
+                                              chain_flags));
+    exact.reset(cmsCreateExtendedTransform(nullptr, 4, chain, bpc, intents, adapt, nullptr, 0, TYPE_RGB_DBL, ink_dbl,
+                                           chain_flags));
+    pname += " after calibration " + cname;
+  }
+  t->exact = std::move(exact);
   if (!to_ink16 || !t->exact)
     return fail(ErrorCode::kColour, pname + ": lcms2 cannot build an sRGB-to-ink transform for this intent");
 

@@ -29,6 +29,10 @@ struct InkConverterSettings {
   std::filesystem::path profile_path;
   std::vector<std::string> ink_names{"cyan", "magenta", "yellow", "black"};
   RenderingIntent intent = RenderingIntent::kPerceptual;
+  /// Empty, or an RGB output profile of this printer as driven through this very separation (a
+  /// calibration set's, docs/colour.md): design sRGB is first mapped, relative colorimetric,
+  /// to the sRGB values that reproduce it on the fabric, then separated as usual.
+  std::filesystem::path calibration_profile;
   /// Total ink limit (sum over inks, percent of one solid ink), e.g. 280; 0 = no limit. Applied to
   /// the linearised amounts, reducing colour inks before black.
   double ink_limit_percent = 0;

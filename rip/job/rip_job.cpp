@@ -68,6 +68,7 @@ Result<RipStats> run_rip(const BandSource& source, const device::PrinterModel& p
   cs.profile_path = settings.profile_path;
   cs.ink_names = inks;
   cs.intent = settings.intent;
+  cs.calibration_profile = settings.calibration_profile;
   cs.ink_limit_percent = settings.ink_limit_percent;
   cs.linearisation = settings.linearisation;
   // A job of many pixels repays building the table of every colour.

@@ -41,6 +41,7 @@ struct RipSettings {
   int drop_levels = 0;                  ///< 0: all the printer's (2^bits_per_pixel); 2: bi-level
   std::filesystem::path profile_path;   ///< printer ICC profile; empty: default CMYK (see InkConverter)
   RenderingIntent intent = RenderingIntent::kPerceptual;
+  std::filesystem::path calibration_profile; ///< a calibration set's RGB profile (InkConverterSettings)
   double ink_limit_percent = 0;         ///< total ink limit, 0 = none
   std::vector<ToneCurve> linearisation; ///< empty or one per printer ink
   int band_rows = 128;                  ///< rows rendered per band: a multiple of kRenderTileRows

@@ -8,6 +8,7 @@
 #include <iostream>
 
 #include "device/model/printer_model_file.h"
+#include "simulator/fabric/spectro_measure.h"
 #include "simulator/internal/sim_log.h"
 #include "simulator/printsim/printer_sim.h"
 
@@ -37,6 +38,16 @@ int main(int argc, char** argv) {
 
   CLI::App* show = app.add_subcommand("model", "Print the built-in printer model file");
 
+  tp::sim::MeasureOptions mo;
+  CLI::App* measure = app.add_subcommand("measure", "Read a chart's patches off a printed fabric (simulated spectrophotometer)");
+  measure->add_option("--chart", mo.chart, "Chart layout (CGATS with SAMPLE_ID, TP_X_MM, TP_Y_MM, device values)")->required();
+  measure->add_option("--fabric", mo.fabric_lab, "The printed fabric's fabric-lab.tif")->required();
+  measure->add_option("--out", mo.out_ti3, "Measurements (.ti3) to write")->required();
+  measure->add_option("--aperture-mm", mo.aperture_mm, "Measured spot diameter")->capture_default_str();
+  measure->add_option("--noise", mo.noise_de, "Standard deviation of noise per L*, a*, b* (0: none)")
+      ->check(CLI::Range(0.0, 10.0))->capture_default_str();
+  measure->add_option("--seed", mo.seed, "Noise seed")->capture_default_str();
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -44,6 +55,15 @@ int main(int argc, char** argv) {
   }
   if (show->parsed()) {
     std::cout << tp::device::format_printer_model(tp::device::PrinterModel{});
+    return 0;
+  }
+  if (measure->parsed()) {
+    auto m = tp::sim::measure_chart(mo);
+    if (!m) {
+      std::fprintf(stderr, "printsim measure: %s\n", m.error().what().c_str());
+      return 1;
+    }
+    std::printf("patches=%zu min_samples=%.0f out=%s\n", m->patches, m->min_samples, mo.out_ti3.c_str());
     return 0;
   }
   if (verbose) tp::sim::sim_log()->set_level(spdlog::level::info);

@@ -1,46 +1,31 @@
 // simulator/fabric/fabric_canvas.cpp: laying drops, spilling finished rows, writing TIFF and PNG.
 #include "simulator/fabric/fabric_canvas.h"
 
-#include <OpenImageIO/imageio.h>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
 
 #include "device/swath/packbits.h"
+#include "simulator/fabric/fabric_preview.h"
 #include "simulator/fabric/fabric_tiff.h"
 
 namespace tp::sim {
 
-namespace {
-
-// How much of red, green and blue light an ink absorbs at full coverage, for the preview.
-std::array<double, 3> ink_absorbance(const std::string& name) {
-  if (name == "cyan") return {0.95, 0.25, 0.05};
-  if (name == "magenta") return {0.10, 0.90, 0.30};
-  if (name == "yellow") return {0.02, 0.08, 0.92};
-  if (name == "black") return {0.92, 0.92, 0.92};
-  if (name == "light_cyan" || name == "light-cyan") return {0.45, 0.12, 0.02};
-  if (name == "light_magenta" || name == "light-magenta") return {0.05, 0.45, 0.15};
-  if (name == "red") return {0.05, 0.85, 0.85};
-  if (name == "orange") return {0.05, 0.55, 0.90};
-  if (name == "green") return {0.85, 0.10, 0.80};
-  if (name == "blue") return {0.85, 0.80, 0.10};
-  return {0.5, 0.5, 0.5};
-}
-
-}  // namespace
-
 Result<std::unique_ptr<FabricCanvas>> FabricCanvas::create(FabricSpec spec, const std::filesystem::path& scratch) {
   if (spec.width_px == 0 || spec.inks.empty())
     return fail(ErrorCode::kInvalidArgument, "fabric: width and inks must be non-zero");
+  spec.look.inks = spec.inks;
+  auto colour = FabricColourModel::create(spec.look, spec.bits_per_pixel);
+  if (!colour) return fail(colour.error().with_context("fabric"));
   std::FILE* f = std::fopen(scratch.c_str(), "w+b");
   if (!f) return fail(ErrorCode::kOutput, scratch.string() + ": cannot create the fabric scratch file");
-  return std::unique_ptr<FabricCanvas>(new FabricCanvas(std::move(spec), f, scratch));
+  return std::unique_ptr<FabricCanvas>(new FabricCanvas(std::move(spec), std::move(*colour), f, scratch));
 }
 
-FabricCanvas::FabricCanvas(FabricSpec spec, std::FILE* scratch, std::filesystem::path scratch_path)
+FabricCanvas::FabricCanvas(FabricSpec spec, FabricColourModel colour, std::FILE* scratch,
+                           std::filesystem::path scratch_path)
     : spec_(std::move(spec)),
+      colour_(std::move(colour)),
       row_bytes_(static_cast<std::size_t>(spec_.width_px) * spec_.inks.size()),
       scratch_(scratch),
       scratch_path_(std::move(scratch_path)) {
@@ -128,35 +113,16 @@ Result<FabricSummary> FabricCanvas::finish(const std::filesystem::path& tif, con
   summary_.height_px = height;
   const int scale = static_cast<int>(std::max<std::uint32_t>(1, (spec_.width_px + preview_max_width - 1) / preview_max_width));
   summary_.preview_scale = scale;
-  const std::size_t nch = spec_.inks.size();
 
   auto tout = FabricTiff::open(tif, spec_.width_px, height, spec_.inks, spec_.dpi_x, spec_.dpi_y);
   if (!tout) return std::unexpected(tout.error());
 
-  const std::uint32_t pw = (spec_.width_px + scale - 1) / scale;
-  const std::uint64_t ph = (height + scale - 1) / scale;
-  OIIO::ImageSpec pspec(static_cast<int>(pw), static_cast<int>(ph), 3, OIIO::TypeDesc::UINT8);
-  pspec.attribute("png:compressionLevel", 3);
-  // pHYs at the preview's own resolution (the fabric's, divided by the downscale).
-  pspec.attribute("XResolution", static_cast<float>(spec_.dpi_x) / static_cast<float>(scale));
-  pspec.attribute("YResolution", static_cast<float>(spec_.dpi_y) / static_cast<float>(scale));
-  pspec.attribute("ResolutionUnit", "inch");
-  auto pout = OIIO::ImageOutput::create(png.string());
-  if (!pout || !pout->open(png.string(), pspec))
-    return fail(ErrorCode::kOutput, png.string() + ": cannot write PNG: " + (pout ? pout->geterror() : OIIO::geterror()));
+  PreviewSpec pv{spec_.width_px, height, scale, spec_.dpi_x, spec_.dpi_y};
+  auto preview = FabricPreview::open(colour_, pv, png,
+                                     spec_.lab_file_name.empty() ? std::filesystem::path{} : png.parent_path() / spec_.lab_file_name);
+  if (!preview) return fail(preview.error());
 
-  // Light each ink lets through at each summed level, per RGB component.
-  const double max_level = static_cast<double>((1 << spec_.bits_per_pixel) - 1);
-  std::vector<std::array<std::array<double, 3>, 256>> transmit(nch);
-  for (std::size_t c = 0; c < nch; ++c) {
-    const auto absorb = ink_absorbance(spec_.inks[c]);
-    for (int v = 0; v < 256; ++v)
-      for (int k = 0; k < 3; ++k) transmit[c][v][k] = 1.0 - absorb[k] * std::min(1.0, v / max_level);
-  }
   std::vector<std::uint8_t> line(row_bytes_), packed;
-  std::vector<double> acc(static_cast<std::size_t>(pw) * 3, 0.0);
-  std::vector<std::uint8_t> prow(static_cast<std::size_t>(pw) * 3);
-  std::uint64_t acc_rows = 0, prow_index = 0;
   std::rewind(scratch_);
   for (std::uint64_t y = 0; y < height; ++y) {
     std::uint32_t len = 0;
@@ -171,36 +137,10 @@ Result<FabricSummary> FabricCanvas::finish(const std::filesystem::path& tif, con
         return fail(ErrorCode::kOutput, scratch_path_.string() + ": fabric scratch corrupt at row " + std::to_string(y));
     }
     if (auto w = (*tout)->write_row(line.data()); !w) return std::unexpected(w.error());
-    // Preview: subtractive mix of the inks, box-filtered scale x scale; blank pixels are white.
-    for (std::uint32_t x = 0; x < spec_.width_px; ++x) {
-      const std::uint8_t* p = &line[static_cast<std::size_t>(x) * nch];
-      double t[3] = {1, 1, 1};
-      for (std::size_t c = 0; c < nch; ++c) {
-        if (!p[c]) continue;
-        const auto& f = transmit[c][p[c]];
-        t[0] *= f[0];
-        t[1] *= f[1];
-        t[2] *= f[2];
-      }
-      double* a = &acc[static_cast<std::size_t>(x / scale) * 3];
-      for (int k = 0; k < 3; ++k) a[k] += t[k];
-    }
-    if (++acc_rows == static_cast<std::uint64_t>(scale) || y + 1 == height) {
-      for (std::uint32_t px = 0; px < pw; ++px) {
-        const std::uint32_t cols = std::min<std::uint32_t>(scale, spec_.width_px - px * scale);
-        const double n = static_cast<double>(cols * acc_rows);
-        for (int k = 0; k < 3; ++k)
-          prow[px * 3 + static_cast<std::size_t>(k)] =
-              static_cast<std::uint8_t>(std::lround(255.0 * acc[px * 3 + static_cast<std::size_t>(k)] / n));
-      }
-      if (!pout->write_scanline(static_cast<int>(prow_index++), 0, OIIO::TypeDesc::UINT8, prow.data()))
-        return fail(ErrorCode::kOutput, png.string() + ": " + pout->geterror());
-      std::fill(acc.begin(), acc.end(), 0.0);
-      acc_rows = 0;
-    }
+    if (auto st = (*preview)->add_row(line); !st) return fail(st.error());
   }
   if (auto c = (*tout)->close(); !c) return std::unexpected(c.error());
-  if (!pout->close()) return fail(ErrorCode::kOutput, png.string() + ": " + pout->geterror());
+  if (auto st = (*preview)->close(); !st) return fail(st.error());
   return summary_;
 }
 

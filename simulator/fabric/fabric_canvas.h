@@ -1,7 +1,8 @@
 // simulator/fabric/fabric_canvas.h: the virtual fabric the simulated printer lays drops on, at
 // printer resolution, one byte per ink per pixel (sum of drop levels). Memory holds only the
 // rows the head can still reach; finished rows spill to a scratch file, so a 20 m roll costs
-// disk, not memory. At the end it writes a multi-channel TIFF and an RGB preview PNG.
+// disk, not memory. At the end it writes a multi-channel TIFF, and the colour the colorimetric
+// printer gives (fabric_colour.h) at the preview scale as an sRGB PNG and a CIELAB TIFF.
 #pragma once
 
 #include <cstdint>
@@ -15,6 +16,7 @@
 
 #include "device/swath/swath.h"
 #include "simulator/common/error.h"
+#include "simulator/fabric/fabric_colour.h"
 
 namespace tp::sim {
 
@@ -30,6 +32,10 @@ struct FabricSpec {
   /// Printer columns run against roll x (carriage origin over the right selvedge): the files show
   /// column c at width_px - 1 - c, so they always show the printed face in the roll frame.
   bool columns_reversed = false;
+  /// How the inks look on the fabric; its `inks` are taken from `inks` above.
+  FabricLook look;
+  /// File name, beside the PNG, of the CIELAB preview (float L*, a*, b*); empty = none.
+  std::string lab_file_name = "fabric-lab.tif";
 };
 
 struct FabricSummary {
@@ -52,17 +58,19 @@ class FabricCanvas {
   /// Adds the drops of a swath whose row 0 landed on `fabric_row`. Rows more than reach_rows
   /// above `fabric_row` are finished (the fabric only moves forward) and leave memory.
   void lay(const device::SwathHeader& header, std::span<const std::uint8_t> raw, std::int64_t fabric_row);
-  /// Writes `tif` (all inks, levels summed per pixel) and `png` (RGB, downscaled by an integer
-  /// factor so it is at most `preview_max_width` wide). Fails with kOutput naming the file.
+  /// Writes `tif` (all inks, levels summed per pixel), `png` (sRGB) and the CIELAB file beside it
+  /// (both downscaled by an integer factor so they are at most `preview_max_width` wide). Fails
+  /// with kOutput naming the file.
   Result<FabricSummary> finish(const std::filesystem::path& tif, const std::filesystem::path& png,
                                std::uint32_t preview_max_width = 4096);
 
  private:
-  FabricCanvas(FabricSpec spec, std::FILE* scratch, std::filesystem::path scratch_path);
+  FabricCanvas(FabricSpec spec, FabricColourModel colour, std::FILE* scratch, std::filesystem::path scratch_path);
   void spill_until(std::int64_t row);
   std::vector<std::uint8_t>& row(std::int64_t r);
 
   FabricSpec spec_;
+  FabricColourModel colour_;
   std::size_t row_bytes_;
   std::FILE* scratch_;
   std::filesystem::path scratch_path_;

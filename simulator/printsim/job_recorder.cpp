@@ -123,6 +123,11 @@ void JobRecorder::job_started(const device::JobBeginMsg& job, bool resumed) {
   spec.bits_per_pixel = m.bits_per_pixel;
   spec.reach_rows = static_cast<std::int64_t>(m.nozzles_per_ink) * m.nozzle_pitch_rows;
   spec.columns_reversed = m.carriage_origin == device::CarriageOrigin::kRight;
+  spec.look.fabric = m.fabric;
+  for (const auto& ink : m.inks) spec.look.ink_strength.push_back(ink.strength);
+  spec.look.drop_volume_pl = m.drop_volume_pl;
+  spec.look.drop_coverage = m.drop_coverage;
+  spec.look.yule_nielsen_n = m.yule_nielsen_n;
   auto canvas = FabricCanvas::create(spec, dir_ / ".fabric.scratch");
   if (!canvas) {
     sim_log()->error("{}", canvas.error().what());

@@ -18,6 +18,8 @@ void register_link_commands(CLI::App& app);
 void register_garment_commands(CLI::App& app);
 // Pattern tools (cmd_pattern.cpp): pattern suggest (stitches for a pattern that has none).
 void register_pattern_commands(CLI::App& app);
+// Colour tools (cmd_colour.cpp): calibrate, proof-check (design against printed fabric).
+void register_colour_commands(CLI::App& app);
 
 // Benchmarks under `printctl bench` (cmd_bench_<what>.cpp).
 void register_bench_link(CLI::App& bench);

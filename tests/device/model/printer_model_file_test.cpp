@@ -59,6 +59,33 @@ TEST(PrinterModelFile, FormatThenParseIsIdentity) {
   EXPECT_EQ(builtin->name, "tp-sim-1600");
 }
 
+TEST(PrinterModelFile, ColourFieldsParseAndRoundTrip) {
+  constexpr const char* text =
+      "tp-printer-model 1\nname = x\ndpi_x = 600\ndpi_y = 600\nink = cyan\nink = black\nfabric = silk\n"
+      "yule_nielsen_n = 2.4\ndrop_coverage = 0.4 0.7 0.95\nink_strength = black 1.2\n";
+  auto m = parse_printer_model(text, "c.tpm");
+  ASSERT_TRUE(m) << m.error().message;
+  EXPECT_EQ(m->fabric, "silk");
+  EXPECT_DOUBLE_EQ(m->yule_nielsen_n, 2.4);
+  EXPECT_EQ(m->drop_coverage, (std::vector<double>{0.4, 0.7, 0.95}));
+  EXPECT_DOUBLE_EQ(m->inks[1].strength, 1.2);
+  EXPECT_DOUBLE_EQ(m->inks[0].strength, 1.0);
+  auto again = parse_printer_model(format_printer_model(*m), "formatted");
+  ASSERT_TRUE(again) << again.error().message;
+  EXPECT_EQ(format_printer_model(*again), format_printer_model(*m));
+  const char* bad[][2] = {
+      {"fabric = denim\n", "key 'fabric': expected a fabric preset"},
+      {"ink_strength = magenta 2\n", "key 'ink_strength': no ink 'magenta'"},
+      {"drop_coverage = 0.5 1\n", "drop_coverage: needs one coverage per drop level (3), got 2"},
+      {"yule_nielsen_n = 0.5\n", "key 'yule_nielsen_n': expected 0 (the fabric's) or a number in 1..10"},
+  };
+  for (const auto& b : bad) {
+    auto r = parse_printer_model(std::string("tp-printer-model 1\nname = x\ndpi_x = 600\ndpi_y = 600\nink = cyan\n") + b[0], "c.tpm");
+    ASSERT_FALSE(r) << b[0];
+    EXPECT_NE(r.error().message.find(b[1]), std::string::npos) << r.error().message;
+  }
+}
+
 struct Bad {
   const char* text;
   const char* expect;

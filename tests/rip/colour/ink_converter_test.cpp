@@ -87,6 +87,19 @@ TEST(InkConverter, PatchChartLandsWithinDeltaE2OfTheProfile) {
   }
 }
 
+TEST(InkConverter, ACalibrationProfileMustBeAnRgbOutputProfile) {
+  if (!std::filesystem::exists(kDefaultCmykProfilePath)) GTEST_SKIP();
+  InkConverterSettings s;
+  s.calibration_profile = kDefaultCmykProfilePath;
+  auto c = InkConverter::create(s);
+  ASSERT_FALSE(c);
+  EXPECT_NE(c.error().message.find("must be an RGB output profile"), std::string::npos) << c.error().message;
+  s.calibration_profile = "/nonexistent/cal.icc";
+  c = InkConverter::create(s);
+  ASSERT_FALSE(c);
+  EXPECT_NE(c.error().message.find("/nonexistent/cal.icc"), std::string::npos) << c.error().message;
+}
+
 TEST(InkConverter, TotalInkNeverExceedsTheLimit) {
   InkConverterSettings s;
   s.ink_limit_percent = 240;

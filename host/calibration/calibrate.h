@@ -1,0 +1,42 @@
+// host/calibration/calibrate.h: `printctl calibrate`: print a profiling chart (ArgyllCMS targen)
+// on the printer through the normal job path, read it (printsim's spectrophotometer, or a real
+// instrument's .ti3), build the ICC profile with colprof and write a calibration set.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include "host/common/error.h"
+
+namespace tp::host {
+
+struct CalibrateOptions {
+  std::optional<std::filesystem::path> printer_model;  ///< .tpm; the built-in model otherwise
+  std::string fabric = "cotton";                       ///< fabric preset loaded in the printer
+  std::filesystem::path out;                           ///< calibration set folder (created)
+  std::optional<std::filesystem::path> measurements;   ///< a real instrument's .ti3: skip printing
+  int patches = 840;                                   ///< profiling chart size (>= 800)
+  int dpi = 150;                                       ///< chart print resolution
+  double aperture_mm = 4;                              ///< simulated instrument
+  double noise_de = 0.2;
+  std::string quality = "m";                           ///< colprof -q: l, m, h
+};
+
+struct CalibrateSummary {
+  int patches = 0;
+  double chart_area_m2 = 0;        ///< fabric the chart used (0 with --measurements)
+  double seconds = 0;
+  double fit_mean_de00 = 0, fit_max_de00 = 0;  ///< profcheck of the profile against its measurements
+  std::filesystem::path profile;
+};
+
+/// Runs the whole calibration. Fails naming the step (targen, the chart job, the measurement,
+/// colprof) and, for a broken measurement file, the file and line.
+[[nodiscard]] Result<CalibrateSummary> calibrate(const CalibrateOptions& options);
+
+/// Checks a measurement file colprof will be given: a CTI3 table with SAMPLE_ID, RGB_R/G/B device
+/// values in 0..100 and XYZ_X/Y/Z or LAB_L/A/B, at least 100 patches, numbers everywhere.
+[[nodiscard]] Status check_measurements(const std::filesystem::path& ti3);
+
+}  // namespace tp::host

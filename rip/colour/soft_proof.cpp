@@ -1,0 +1,51 @@
+// rip/colour/soft_proof.cpp: the sRGB -> printer -> sRGB chain with lcms2 and the gamut tally.
+#include "rip/colour/soft_proof.h"
+
+#include <lcms2.h>
+
+#include <algorithm>
+
+#include "device/colour/colorimetry.h"
+#include "rip/colour/internal/lcms_handles.h"
+#include "rip/colour/proof_check.h"
+
+namespace tp::rip {
+
+Result<SoftProofSummary> soft_proof(const geometry::ImageRgba8& design, const std::filesystem::path& profile,
+                                    geometry::ImageRgba8& proof, geometry::ImageRgba8* overlay) {
+  const std::string pname = profile.string();
+  lcms::Profile prof(cmsOpenProfileFromFile(pname.c_str(), "r"));
+  if (!prof) return fail(ErrorCode::kColour, pname + ": not a readable ICC profile");
+  lcms::Profile srgb_in(cmsCreate_sRGBProfile()), srgb_out(cmsCreate_sRGBProfile());
+  // Printer profile as output then as input: the colour it gives for each design colour.
+  cmsHPROFILE chain[4] = {srgb_in.get(), prof.get(), prof.get(), srgb_out.get()};
+  lcms::Transform t(cmsCreateMultiprofileTransform(chain, 4, TYPE_RGBA_8, TYPE_RGBA_8, INTENT_RELATIVE_COLORIMETRIC,
+                                                   cmsFLAGS_COPY_ALPHA | cmsFLAGS_HIGHRESPRECALC));
+  if (!t) return fail(ErrorCode::kColour, pname + ": lcms2 cannot build the soft-proof transform");
+  proof = design;
+  cmsDoTransform(t.get(), design.pixels.data(), proof.pixels.data(), static_cast<cmsUInt32Number>(design.pixels.size()));
+  if (overlay) *overlay = proof;
+  SoftProofSummary s;
+  std::size_t oog = 0;
+  for (std::size_t i = 0; i < design.pixels.size(); ++i) {
+    const geometry::Rgba8& d = design.pixels[i];
+    if (d.a == 0 || (d.r >= 250 && d.g >= 250 && d.b >= 250)) {
+      proof.pixels[i] = d;
+      if (overlay) overlay->pixels[i] = d;
+      continue;
+    }
+    ++s.printed_pixels;
+    const geometry::Rgba8& p = proof.pixels[i];
+    const double de = device::delta_e_2000(device::xyz_to_lab(device::srgb8_to_xyz(d.r, d.g, d.b)),
+                                           device::xyz_to_lab(device::srgb8_to_xyz(p.r, p.g, p.b)));
+    s.worst_de00 = std::max(s.worst_de00, de);
+    if (de > kGamutTolerance_de00) {
+      ++oog;
+      if (overlay) overlay->pixels[i] = {0, 255, 0, d.a};
+    }
+  }
+  s.out_of_gamut_share = s.printed_pixels ? static_cast<double>(oog) / static_cast<double>(s.printed_pixels) : 0.0;
+  return s;
+}
+
+}  // namespace tp::rip
