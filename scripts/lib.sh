@@ -10,7 +10,7 @@ TP_PACKAGES=(
   build-essential cmake ninja-build pkg-config git
   libusb-1.0-0-dev libgpiod-dev gpiod usbutils
   libopenimageio-dev openimageio-tools
-  libcgal-dev libeigen3-dev libopenmesh-dev
+  libcgal-dev libeigen3-dev
   libspdlog-dev nlohmann-json3-dev libcli11-dev libsqlite3-dev sqlite3 libzip-dev libmd-dev zlib1g-dev
   liblcms2-dev icc-profiles-free colord-data libgs10-common ghostscript
   libgtest-dev libgmock-dev libbenchmark-dev
