@@ -6,11 +6,10 @@
 #include <cmath>
 
 #include "device/firmware/print_timing.h"
-#include "host/pipeline/printer_model.h"
 #include "host/pipeline/internal/pipeline_state.h"
 #include "host/pipeline/internal/plan_steps.h"
+#include "host/pipeline/printer_model.h"
 #include "host/session/print_session.h"
-#include "host/session/sim_reexec.h"
 #include "rip/job/rip_job.h"
 
 namespace tp::host::internal {
@@ -134,7 +133,7 @@ nlohmann::json ink_json(const rip::RipStats& st, const device::PrinterModel& mod
 }  // namespace
 
 Status stage_print(PipelineState& ps) {
-  const std::string printer = ps.options.printer_override.empty() ? ps.job.print.printer : ps.options.printer_override;
+  const PrinterChoice printer = effective_printer(ps.job.print.printer, ps.options.printer_override);
   auto model = job_printer_model(ps.job);
   if (!model) return fail(model.error());
   rip::RipSettings settings = rip_settings(ps);
@@ -142,14 +141,10 @@ Status stage_print(PipelineState& ps) {
   if (!swath_plan) return fail(swath_plan.error());
   ps.report["estimate"] = print_estimate(ps, *model);
 
-  // Without a printer ("none") the RIP still runs in full; its swaths are counted and dropped.
+  // Without a printer (kNone) the RIP still runs in full; its swaths are counted and dropped.
   std::unique_ptr<PrintSession> session;
   std::uint32_t acked = 0;
-  if (printer != "none") {
-    if (printer == "sim" && !under_printsim())
-      return fail(ErrorCode::kPrinter,
-                  "printer 'sim' is the simulated printer: run the job with `printctl run` (which starts printsim) "
-                  "or under `printsim run -- ...`");
+  if (printer != PrinterChoice::kNone) {
     PrinterConfig cfg;
     cfg.printer = printer;
     auto s = PrintSession::open(cfg);
@@ -193,7 +188,7 @@ Status stage_print(PipelineState& ps) {
   ps.report["ink"] = ink_json(*stats, *model);
   ps.report["measured"] = {{"print_time_s", nullptr}, {"fabric_length_mm", nullptr}, {"swaths", stats->swaths}};
 
-  nlohmann::json print = {{"printer", printer}, {"swaths_total", stats->swaths}, {"swaths_sent", stats->swaths_sent},
+  nlohmann::json print = {{"printer", std::string(to_string(printer))}, {"swaths_total", stats->swaths}, {"swaths_sent", stats->swaths_sent},
                           {"swaths_acked", session ? acked : 0u}};
   if (session) {
     // Feed the end of the roll past the cutter so the last cut cue fires.

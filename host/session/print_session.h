@@ -23,13 +23,14 @@
 #include "drivers/usb/usb_transport.h"
 #include "geometry/common/cancel.h"
 #include "host/common/error.h"
+#include "host/job/printer_choice.h"
 
 namespace tp::host {
 
 struct PrinterConfig {
-  /// "sim": the printsim printer (the process must run under printsim, see sim_reexec.h);
-  /// "usb": a real printer. Both go through the same USB and GPIO drivers.
-  std::string printer = "sim";
+  /// kSim: the printsim printer (the process must run under printsim, see sim_reexec.h);
+  /// kUsb: a real printer. Both go through the same USB and GPIO drivers; kNone cannot be opened.
+  PrinterChoice printer = PrinterChoice::kSim;
   drivers::UsbOptions usb;
   bool use_gpio = true;  ///< without GPIO, cues are acknowledged without firing a line
   drivers::GpioConfig gpio;
