@@ -4,6 +4,7 @@
 // session decides where a resumed job goes on from what the printer holds.
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "device/firmware/print_timing.h"
 #include "host/pipeline/internal/pipeline_state.h"
@@ -167,19 +168,25 @@ Status stage_print(PipelineState& ps) {
       if (auto st = session->queue_cue(c.kind, c.y_um, c.x_um); !st) return st;
   }
 
-  // Swaths go to the printer as the RIP completes them.
+  // Swaths go to the printer as the RIP completes them. A printer that fails the job (a fault such
+  // as a head strike or media jam, an unplug that lasts) stops the RIP; its own error is what the
+  // job reports, so the operator reads a printer fault, not a RIP error.
+  std::optional<Error> printer_error;
   auto sink = [&](device::Swath&& swath) -> rip::Status {
     // Nothing reaches the printer that the job's stored swath plan does not hold.
     if (auto st = swath_plan->check(swath); !st) return rip::fail(rip::ErrorCode::kSwath, st.error().message);
     if (!session) return {};
-    if (auto st = session->send_swath(swath, ps.cancel); !st)
-      return rip::fail(st.error().code == ErrorCode::kCancelled ? rip::ErrorCode::kCancelled : rip::ErrorCode::kSwath,
-                       st.error().message);
+    if (auto st = session->send_swath(swath, ps.cancel); !st) {
+      if (st.error().code == ErrorCode::kCancelled) return rip::fail(rip::ErrorCode::kCancelled, st.error().message);
+      printer_error = st.error();
+      return rip::fail(rip::ErrorCode::kSwath, st.error().message);
+    }
     return {};
   };
   auto stats = rip::rip_marker(ps.roll, *ps.renderer, *model, settings, sink, {}, ps.cancel);
   if (!stats) {
-    if (session) (void)session->abort_job(stats.error().message);
+    if (session) (void)session->abort_job(stats.error().message);  // a no-op once the session ended it
+    if (printer_error) return fail(*printer_error);
     bool cancelled = stats.error().code == rip::ErrorCode::kCancelled || ps.cancel.cancelled();
     return fail(cancelled ? ErrorCode::kCancelled : ErrorCode::kPipeline, stats.error().message);
   }
@@ -188,7 +195,9 @@ Status stage_print(PipelineState& ps) {
   ps.report["ink"] = ink_json(*stats, *model);
   ps.report["measured"] = {{"print_time_s", nullptr}, {"fabric_length_mm", nullptr}, {"swaths", stats->swaths}};
 
-  nlohmann::json print = {{"printer", std::string(to_string(printer))}, {"swaths_total", stats->swaths}, {"swaths_sent", stats->swaths_sent},
+  nlohmann::json print = {{"printer", std::string(to_string(printer))},
+                          {"swaths_total", stats->swaths},
+                          {"swaths_sent", stats->swaths_sent},
                           {"swaths_acked", session ? acked : 0u}};
   if (session) {
     // Feed the end of the roll past the cutter so the last cut cue fires.
