@@ -66,8 +66,8 @@ struct Frame {
 
 /// Appends the frame for (`type`, `seq`, `payload`) to `out`. Payloads over
 /// kMaxFramePayloadBytes are a programming error and fail with kInvalidArgument.
-Status encode_frame(MessageType type, std::uint32_t seq, std::span<const std::uint8_t> payload,
-                    std::vector<std::uint8_t>& out, std::uint16_t flags = 0);
+[[nodiscard]] Status encode_frame(MessageType type, std::uint32_t seq, std::span<const std::uint8_t> payload,
+                                  std::vector<std::uint8_t>& out, std::uint16_t flags = 0);
 
 /// Splits a byte stream into frames. Feed bytes as they arrive; take frames and errors with
 /// next(). A header with a bad magic, version, length or CRC makes the decoder scan forward

@@ -44,7 +44,8 @@ struct FabricSummary {
 class FabricCanvas {
  public:
   /// `scratch` is a file for finished rows (created, removed when the canvas goes).
-  static Result<std::unique_ptr<FabricCanvas>> create(FabricSpec spec, const std::filesystem::path& scratch);
+  [[nodiscard]] static Result<std::unique_ptr<FabricCanvas>> create(FabricSpec spec,
+                                                                    const std::filesystem::path& scratch);
   ~FabricCanvas();
   FabricCanvas(const FabricCanvas&) = delete;
   FabricCanvas& operator=(const FabricCanvas&) = delete;
@@ -54,8 +55,8 @@ class FabricCanvas {
   void lay(const device::SwathHeader& header, std::span<const std::uint8_t> raw, std::int64_t fabric_row);
   /// Writes `tif` (all inks, levels summed per pixel) and `png` (RGB, downscaled by an integer
   /// factor so it is at most `preview_max_width` wide). Fails with kOutput naming the file.
-  Result<FabricSummary> finish(const std::filesystem::path& tif, const std::filesystem::path& png,
-                               std::uint32_t preview_max_width = 4096);
+  [[nodiscard]] Result<FabricSummary> finish(const std::filesystem::path& tif, const std::filesystem::path& png,
+                                             std::uint32_t preview_max_width = 4096);
 
  private:
   FabricCanvas(FabricSpec spec, std::FILE* scratch, std::filesystem::path scratch_path);
