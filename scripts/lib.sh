@@ -17,6 +17,7 @@ TP_PACKAGES=(
   libumockdev-dev umockdev
   python3
   clang libclang-rt-14-dev
+  clang-format  # scripts/check-format: the lines a change touches follow .clang-format
   python3-ezdxf python3-jsonschema pngcheck librsvg2-bin libtiff-tools
 )
 
