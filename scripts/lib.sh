@@ -10,13 +10,14 @@ TP_PACKAGES=(
   build-essential cmake ninja-build pkg-config git
   libusb-1.0-0-dev libgpiod-dev gpiod usbutils
   libopenimageio-dev openimageio-tools
-  libcgal-dev libeigen3-dev libopenmesh-dev
+  libcgal-dev libeigen3-dev
   libspdlog-dev nlohmann-json3-dev libcli11-dev libsqlite3-dev sqlite3 libzip-dev libmd-dev zlib1g-dev
   liblcms2-dev icc-profiles-free colord-data libgs10-common ghostscript
   libgtest-dev libgmock-dev libbenchmark-dev
   libumockdev-dev umockdev
   python3
   clang libclang-rt-14-dev
+  clang-format  # scripts/check-format: the lines a change touches follow .clang-format
   python3-ezdxf python3-jsonschema pngcheck librsvg2-bin libtiff-tools
   libtiff-dev   # separated TIFFs (InkSet, InkNames) for separations and the simulator's fabric
   assimp-utils  # independent OBJ/MTL reader for the garment.obj test

@@ -6,14 +6,18 @@
 #include <cmath>
 
 #include "device/protocol/crc.h"
+#include "device/swath/packbits.h"
 
 namespace tp::device {
 
 std::array<std::uint8_t, 256> drop_count_table(int bpp);  // controller_engine.cpp
 
 namespace {
-// A PackBits stream may exceed its raw size by one byte per 128 plus a packet header.
-std::uint64_t packbits_bound(std::uint64_t raw) { return raw + raw / 128 + 16; }
+// The largest PackBits stream of a swath: every channel row encoded on its own (as the RIP does)
+// at the codec's worst case, which also bounds the swath encoded in one piece.
+std::uint64_t packbits_bound(const SwathHeader& h) {
+  return std::uint64_t(h.rows) * h.channels * packbits_max_size(swath_row_bytes(h));
+}
 // Cue table bound: a marker has a few cues per piece; this caps a hostile host's memory use.
 constexpr std::size_t kMaxCues = 4096;
 }  // namespace
@@ -362,8 +366,8 @@ void PrinterController::on_swath_header(const SwathHeaderMsg& m, std::uint32_t s
   if (h.raw_bytes != swath_raw_bytes(h))
     return refuse(ErrorCode::kInvalidArgument, "raw_bytes " + std::to_string(h.raw_bytes) + " but geometry needs " +
                                                    std::to_string(swath_raw_bytes(h)));
-  const bool size_ok = h.compression == SwathCompression::kNone ? m.data_bytes == h.raw_bytes
-                                                                : m.data_bytes <= packbits_bound(h.raw_bytes);
+  const bool size_ok =
+      h.compression == SwathCompression::kNone ? m.data_bytes == h.raw_bytes : m.data_bytes <= packbits_bound(h);
   if (!size_ok) return refuse(ErrorCode::kInvalidArgument, "data_bytes " + std::to_string(m.data_bytes) + " impossible for its compression");
   // Credits: the host may not send more than the buffer holds.
   rx_swath_.reset();

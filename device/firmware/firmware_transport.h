@@ -17,10 +17,10 @@ class FirmwareTransport final : public Transport {
   /// `controller` must outlive the transport.
   explicit FirmwareTransport(PrinterController& controller);
 
-  Status write(std::span<const std::uint8_t> bytes) override;
-  Result<std::size_t> read(std::span<std::uint8_t> buffer, std::chrono::milliseconds timeout) override;
-  Status reset() override;
-  Status reconnect(std::chrono::milliseconds timeout) override;
+  [[nodiscard]] Status write(std::span<const std::uint8_t> bytes) override;
+  [[nodiscard]] Result<std::size_t> read(std::span<std::uint8_t> buffer, std::chrono::milliseconds timeout) override;
+  [[nodiscard]] Status reset() override;
+  [[nodiscard]] Status reconnect(std::chrono::milliseconds timeout) override;
   std::string describe() const override;
 
   /// Plays an unplugged (false) or replugged (true) cable: while unplugged every call fails

@@ -4,6 +4,7 @@
 #include <cinttypes>
 #include <cstdio>
 #include <string>
+#include <type_traits>
 
 #include "device/protocol/messages.h"
 
@@ -28,124 +29,129 @@ std::string quote_text(const std::string& s) {
   return out + "\"";
 }
 
-std::string fields(const Frame& f) {
+// ---- The fields of each message as the dump shows them. ----
+
+std::string text(const HelloMsg& m) {
   char b[512];
-  const auto& p = f.payload;
+  std::snprintf(b, sizeof b, " versions=%u..%u max_payload=%u host=", m.min_version, m.max_version,
+                m.max_payload_bytes);
+  return b + quote_text(m.host);
+}
+
+std::string text(const IdentifyMsg& m) {
+  char b[512];
+  std::string inks;
+  for (const auto& i : m.inks) inks += (inks.empty() ? "" : ",") + i;
+  std::snprintf(b, sizeof b,
+                " protocol=%u (speaks %u..%u) dpi=%dx%d nozzles=%u bpp=%u slots=%u buffer=%u width_um=%u "
+                "max_payload=%u inks=",
+                m.protocol_version, m.min_version, m.max_version, m.dpi_x, m.dpi_y, m.nozzles_per_ink, m.bits_per_pixel,
+                m.swath_slots, m.swath_buffer_bytes, m.print_width_um, m.max_payload_bytes);
+  return b + inks + " model=" + quote_text(m.model) + " firmware=" + quote_text(m.firmware) +
+         " ieee1284=" + quote_text(m.ieee1284_id);
+}
+
+std::string text(const JobBeginMsg& m) {
+  char b[512];
+  std::snprintf(b, sizeof b, " job=%" PRIu64 " first_swath=%u fabric_width_px=%u fabric_um=%" PRId64 " name=", m.job_id,
+                m.first_swath, m.fabric_width_px, m.fabric_pos_um);
+  return b + quote_text(m.name);
+}
+
+std::string text(const JobEndMsg& m) {
+  char b[512];
+  std::snprintf(b, sizeof b, " swaths=%u final_feed_um=%u", m.swath_count, m.final_feed_um);
+  return b;
+}
+
+std::string text(const SwathHeaderMsg& m) {
+  char b[512];
+  const auto& h = m.header;
+  std::snprintf(b, sizeof b,
+                " swath=%u pass=%u dir=%s first_row=%" PRId64
+                " rows=%u row_step=%u x=%d width=%u ch=%u bpp=%u "
+                "feed_um=%u comp=%s raw=%u data=%u crc=0x%08x",
+                h.index, h.pass, h.direction == CarriageDirection::kLeftToRight ? "ltr" : "rtl", h.first_row, h.rows,
+                h.row_step, h.x_start_px, h.width_px, h.channels, h.bits_per_pixel, h.feed_before_um,
+                h.compression == SwathCompression::kNone ? "none" : "packbits", h.raw_bytes, m.data_bytes,
+                m.data_crc32);
+  return b;
+}
+
+std::string text(const SwathDataMsg& m) {
+  char b[512];
+  std::snprintf(b, sizeof b, " swath=%u offset=%u bytes=%zu", m.swath_index, m.offset, m.data.size());
+  return b;
+}
+
+std::string text(const FeedMsg& m) { return " feed_um=" + std::to_string(m.feed_um); }
+
+std::string text(const CutterCueMsg& m) {
+  char b[512];
+  std::snprintf(b, sizeof b, " cue=%u kind=%s position_um=%" PRId64 " x_um=%d", m.cue_id,
+                std::string(to_string(m.kind)).c_str(), m.position_um, m.x_um);
+  return b;
+}
+
+std::string text(const CueDoneMsg& m) { return " cue=" + std::to_string(m.cue_id); }
+
+std::string text(const AbortMsg& m) { return " reason=" + quote_text(m.reason); }
+
+std::string text(const StatusMsg& m) {
+  char b[512];
+  std::snprintf(b, sizeof b,
+                " ack=%u naks=%u state=%s cond=%s job=%" PRIu64
+                " swath_next=%u printed_next=%u slots=%u "
+                "free=%u fabric_um=%" PRId64 " cue_waiting=%u cues=%u last_job=%" PRIu64
+                " outcome=%s rx_crc_errors=%u rx_gaps=%u printed_um=%" PRId64 " queued_um=%" PRId64
+                " last_printed_next=%u last_printed_um=%" PRId64 " last_fabric_um=%" PRId64,
+                m.ack_seq, m.naks, std::string(to_string(m.state)).c_str(), std::string(to_string(m.condition)).c_str(),
+                m.job_id, m.swath_next, m.printed_next, m.free_slots, m.free_bytes, m.fabric_pos_um, m.cue_waiting,
+                m.cues_registered, m.last_job_id, std::string(to_string(m.last_outcome)).c_str(), m.rx_crc_errors,
+                m.rx_gaps, m.printed_fabric_um, m.queued_fabric_um, m.last_printed_next, m.last_printed_fabric_um,
+                m.last_fabric_pos_um);
+  return b;
+}
+
+std::string text(const RejectMsg& m) {
+  return " refused=" + std::string(to_string(m.refused)) + " seq=" + std::to_string(m.seq) +
+         " code=" + std::string(to_string(m.code)) + " message=" + quote_text(m.message);
+}
+
+std::string text(const JobReportMsg& m) {
+  char b[512];
+  std::string drops;
+  for (auto d : m.drops_per_ink) drops += (drops.empty() ? "" : ",") + std::to_string(d);
+  std::snprintf(b, sizeof b,
+                " job=%" PRIu64 " outcome=%s cond=%s first_swath=%u printed=%u feed_um=%" PRId64 " time_us=%" PRIu64
+                " cues=%u overruns=%u drops=",
+                m.job_id, std::string(to_string(m.outcome)).c_str(), std::string(to_string(m.condition)).c_str(),
+                m.first_swath, m.swaths_printed, m.feed_travel_um, m.print_time_us, m.cues_fired, m.overruns);
+  return b + drops + " name=" + quote_text(m.name);
+}
+
+// Messages without payload show only an unexpected one.
+std::string empty_text(std::span<const std::uint8_t> p) {
+  return p.empty() ? "" : " (" + std::to_string(p.size()) + " unexpected payload bytes)";
+}
+
+template <class M, class Decode>
+std::string payload_text(std::span<const std::uint8_t> p, Decode decode) {
+  if constexpr (std::is_empty_v<M>) {
+    return empty_text(p);
+  } else {
+    auto m = decode(p);
+    if (!m) return "malformed: " + m.error().message;
+    return text(*m);
+  }
+}
+
+std::string fields(const Frame& f) {
   switch (f.header.type) {
-    case MessageType::kHello: {
-      auto m = decode_hello(p);
-      if (!m) return "malformed: " + m.error().message;
-      std::snprintf(b, sizeof b, " versions=%u..%u max_payload=%u host=", m->min_version, m->max_version,
-                    m->max_payload_bytes);
-      return b + quote_text(m->host);
-    }
-    case MessageType::kIdentify: {
-      auto m = decode_identify(p);
-      if (!m) return "malformed: " + m.error().message;
-      std::string inks;
-      for (const auto& i : m->inks) inks += (inks.empty() ? "" : ",") + i;
-      std::snprintf(b, sizeof b,
-                    " protocol=%u (speaks %u..%u) dpi=%dx%d nozzles=%u bpp=%u slots=%u buffer=%u width_um=%u "
-                    "max_payload=%u inks=",
-                    m->protocol_version, m->min_version, m->max_version, m->dpi_x, m->dpi_y, m->nozzles_per_ink,
-                    m->bits_per_pixel, m->swath_slots, m->swath_buffer_bytes, m->print_width_um, m->max_payload_bytes);
-      return b + inks + " model=" + quote_text(m->model) + " firmware=" + quote_text(m->firmware) +
-             " ieee1284=" + quote_text(m->ieee1284_id);
-    }
-    case MessageType::kStatusQuery:
-    case MessageType::kReportQuery:
-    case MessageType::kPause:
-    case MessageType::kResume:
-      return p.empty() ? "" : " (" + std::to_string(p.size()) + " unexpected payload bytes)";
-    case MessageType::kJobBegin: {
-      auto m = decode_job_begin(p);
-      if (!m) return "malformed: " + m.error().message;
-      std::snprintf(b, sizeof b, " job=%" PRIu64 " first_swath=%u fabric_width_px=%u fabric_um=%" PRId64 " name=",
-                    m->job_id, m->first_swath, m->fabric_width_px, m->fabric_pos_um);
-      return b + quote_text(m->name);
-    }
-    case MessageType::kJobEnd: {
-      auto m = decode_job_end(p);
-      if (!m) return "malformed: " + m.error().message;
-      std::snprintf(b, sizeof b, " swaths=%u final_feed_um=%u", m->swath_count, m->final_feed_um);
-      return b;
-    }
-    case MessageType::kSwathHeader: {
-      auto m = decode_swath_header(p);
-      if (!m) return "malformed: " + m.error().message;
-      const auto& h = m->header;
-      std::snprintf(b, sizeof b,
-                    " swath=%u pass=%u dir=%s first_row=%" PRId64 " rows=%u row_step=%u x=%d width=%u ch=%u bpp=%u "
-                    "feed_um=%u comp=%s raw=%u data=%u crc=0x%08x",
-                    h.index, h.pass, h.direction == CarriageDirection::kLeftToRight ? "ltr" : "rtl", h.first_row,
-                    h.rows, h.row_step, h.x_start_px, h.width_px, h.channels, h.bits_per_pixel, h.feed_before_um,
-                    h.compression == SwathCompression::kNone ? "none" : "packbits", h.raw_bytes, m->data_bytes,
-                    m->data_crc32);
-      return b;
-    }
-    case MessageType::kSwathData: {
-      auto m = decode_swath_data(p);
-      if (!m) return "malformed: " + m.error().message;
-      std::snprintf(b, sizeof b, " swath=%u offset=%u bytes=%zu", m->swath_index, m->offset, m->data.size());
-      return b;
-    }
-    case MessageType::kFeed: {
-      auto m = decode_feed(p);
-      if (!m) return "malformed: " + m.error().message;
-      return " feed_um=" + std::to_string(m->feed_um);
-    }
-    case MessageType::kCutterCue: {
-      auto m = decode_cutter_cue(p);
-      if (!m) return "malformed: " + m.error().message;
-      std::snprintf(b, sizeof b, " cue=%u kind=%s position_um=%" PRId64 " x_um=%d", m->cue_id,
-                    std::string(to_string(m->kind)).c_str(), m->position_um, m->x_um);
-      return b;
-    }
-    case MessageType::kCueDone: {
-      auto m = decode_cue_done(p);
-      if (!m) return "malformed: " + m.error().message;
-      return " cue=" + std::to_string(m->cue_id);
-    }
-    case MessageType::kAbort: {
-      auto m = decode_abort(p);
-      if (!m) return "malformed: " + m.error().message;
-      return " reason=" + quote_text(m->reason);
-    }
-    case MessageType::kStatus: {
-      auto m = decode_status(p);
-      if (!m) return "malformed: " + m.error().message;
-      std::snprintf(b, sizeof b,
-                    " ack=%u naks=%u state=%s cond=%s job=%" PRIu64 " swath_next=%u printed_next=%u slots=%u "
-                    "free=%u fabric_um=%" PRId64 " cue_waiting=%u cues=%u last_job=%" PRIu64
-                    " outcome=%s rx_crc_errors=%u rx_gaps=%u printed_um=%" PRId64 " queued_um=%" PRId64
-                    " last_printed_next=%u last_printed_um=%" PRId64 " last_fabric_um=%" PRId64,
-                    m->ack_seq, m->naks, std::string(to_string(m->state)).c_str(),
-                    std::string(to_string(m->condition)).c_str(), m->job_id, m->swath_next, m->printed_next,
-                    m->free_slots, m->free_bytes, m->fabric_pos_um, m->cue_waiting, m->cues_registered,
-                    m->last_job_id, std::string(to_string(m->last_outcome)).c_str(), m->rx_crc_errors, m->rx_gaps,
-                    m->printed_fabric_um, m->queued_fabric_um, m->last_printed_next, m->last_printed_fabric_um,
-                    m->last_fabric_pos_um);
-      return b;
-    }
-    case MessageType::kReject: {
-      auto m = decode_reject(p);
-      if (!m) return "malformed: " + m.error().message;
-      return " refused=" + std::string(to_string(m->refused)) + " seq=" + std::to_string(m->seq) +
-             " code=" + std::string(to_string(m->code)) + " message=" + quote_text(m->message);
-    }
-    case MessageType::kJobReport: {
-      auto m = decode_job_report(p);
-      if (!m) return "malformed: " + m.error().message;
-      std::string drops;
-      for (auto d : m->drops_per_ink) drops += (drops.empty() ? "" : ",") + std::to_string(d);
-      std::snprintf(b, sizeof b,
-                    " job=%" PRIu64 " outcome=%s cond=%s first_swath=%u printed=%u feed_um=%" PRId64
-                    " time_us=%" PRIu64 " cues=%u overruns=%u drops=",
-                    m->job_id, std::string(to_string(m->outcome)).c_str(),
-                    std::string(to_string(m->condition)).c_str(), m->first_swath, m->swaths_printed,
-                    m->feed_travel_um, m->print_time_us, m->cues_fired, m->overruns);
-      return b + drops + " name=" + quote_text(m->name);
-    }
+#define TP_MESSAGE_DESCRIBE(name, code, wire, Payload) \
+  case MessageType::name: return payload_text<Payload>(f.payload, decode_##wire);
+    TP_PROTOCOL_MESSAGES(TP_MESSAGE_DESCRIBE)
+#undef TP_MESSAGE_DESCRIBE
   }
   return " (unknown type)";
 }

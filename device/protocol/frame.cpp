@@ -11,23 +11,10 @@ namespace tp::device {
 
 std::string_view to_string(MessageType type) {
   switch (type) {
-    case MessageType::kHello: return "hello";
-    case MessageType::kStatusQuery: return "status_query";
-    case MessageType::kReportQuery: return "report_query";
-    case MessageType::kJobBegin: return "job_begin";
-    case MessageType::kJobEnd: return "job_end";
-    case MessageType::kSwathHeader: return "swath_header";
-    case MessageType::kSwathData: return "swath_data";
-    case MessageType::kFeed: return "feed";
-    case MessageType::kCutterCue: return "cutter_cue";
-    case MessageType::kCueDone: return "cue_done";
-    case MessageType::kPause: return "pause";
-    case MessageType::kResume: return "resume";
-    case MessageType::kAbort: return "abort";
-    case MessageType::kIdentify: return "identify";
-    case MessageType::kStatus: return "status";
-    case MessageType::kReject: return "reject";
-    case MessageType::kJobReport: return "job_report";
+#define TP_MESSAGE_NAME(name, code, wire, Payload) \
+  case MessageType::name: return #wire;
+    TP_PROTOCOL_MESSAGES(TP_MESSAGE_NAME)
+#undef TP_MESSAGE_NAME
   }
   return "unknown";
 }

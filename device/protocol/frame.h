@@ -17,28 +17,23 @@
 #include <vector>
 
 #include "device/common/error.h"
+#include "device/protocol/message_table.h"
 
 namespace tp::device {
 
-/// Every message of the protocol. Values below 0x80 travel host -> printer, above printer -> host.
+/// Every message of the protocol (message_table.h). Values below 0x80 travel host -> printer,
+/// above printer -> host.
 enum class MessageType : std::uint8_t {
-  kHello = 0x01,        ///< host opens the link: versions it speaks; resets sequence numbers
-  kStatusQuery = 0x02,  ///< host asks for a status report now
-  kReportQuery = 0x03,  ///< host asks for the report of the last finished job again
-  kJobBegin = 0x10,     ///< start (or resume) a job
-  kJobEnd = 0x11,       ///< no more swaths: print what is buffered, feed out, report
-  kSwathHeader = 0x12,  ///< a swath's geometry, size and CRC; its data follows in chunks
-  kSwathData = 0x13,    ///< one chunk of a swath's (compressed) data
-  kFeed = 0x14,         ///< advance the fabric without printing
-  kCutterCue = 0x15,    ///< register a cutter cue or notch mark at a fabric position
-  kCueDone = 0x16,      ///< the host has fired a cue: the printer may feed on
-  kPause = 0x17,
-  kResume = 0x18,
-  kAbort = 0x19,
-  kIdentify = 0x81,     ///< printer's answer to hello: model, versions, capabilities
-  kStatus = 0x82,       ///< acknowledgements, credits, state, fabric position
-  kReject = 0x83,       ///< a host request the printer refused, with a reason
-  kJobReport = 0x84,    ///< counters of a finished job
+#define TP_MESSAGE_ENUMERATOR(name, code, wire, Payload) name = code,
+  TP_PROTOCOL_MESSAGES(TP_MESSAGE_ENUMERATOR)
+#undef TP_MESSAGE_ENUMERATOR
+};
+
+/// Every MessageType, in table order.
+inline constexpr MessageType kAllMessageTypes[] = {
+#define TP_MESSAGE_LIST(name, code, wire, Payload) MessageType::name,
+    TP_PROTOCOL_MESSAGES(TP_MESSAGE_LIST)
+#undef TP_MESSAGE_LIST
 };
 
 /// Short stable name ("swath_data"), "unknown" for values outside the enum.
@@ -71,8 +66,8 @@ struct Frame {
 
 /// Appends the frame for (`type`, `seq`, `payload`) to `out`. Payloads over
 /// kMaxFramePayloadBytes are a programming error and fail with kInvalidArgument.
-Status encode_frame(MessageType type, std::uint32_t seq, std::span<const std::uint8_t> payload,
-                    std::vector<std::uint8_t>& out, std::uint16_t flags = 0);
+[[nodiscard]] Status encode_frame(MessageType type, std::uint32_t seq, std::span<const std::uint8_t> payload,
+                                  std::vector<std::uint8_t>& out, std::uint16_t flags = 0);
 
 /// Splits a byte stream into frames. Feed bytes as they arrive; take frames and errors with
 /// next(). A header with a bad magic, version, length or CRC makes the decoder scan forward

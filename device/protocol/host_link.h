@@ -50,30 +50,30 @@ class HostLink {
   /// kIncompatiblePrinter if the printer speaks no version in kProtocolVersionMin..Max (the
   /// message names the printer's model and versions), kTimeout if it never answers, or the
   /// transport's error.
-  Result<IdentifyMsg> handshake();
+  [[nodiscard]] Result<IdentifyMsg> handshake();
 
   /// Sends one message; it is resent until acknowledged. Blocks (polling the printer) while
   /// max_unacked_bytes are in flight. Fails with the transport's error or kTimeout on a dead link.
-  Status send(MessageType type, std::span<const std::uint8_t> payload);
+  [[nodiscard]] Status send(MessageType type, std::span<const std::uint8_t> payload);
   template <class Msg>
-  Status send_msg(MessageType type, const Msg& msg) {
+  [[nodiscard]] Status send_msg(MessageType type, const Msg& msg) {
     std::vector<std::uint8_t> payload;
     encode(msg, payload);
     return send(type, payload);
   }
 
   /// Sends a swath: its header, then its data in chunk_bytes pieces.
-  Status send_swath(const Swath& swath);
+  [[nodiscard]] Status send_swath(const Swath& swath);
 
   /// Reads what the printer sent, waiting up to `timeout` for the first bytes, and handles it:
   /// acknowledgements free resend buffers, NAKs and the retransmit timer resend.
-  Status poll(std::chrono::milliseconds timeout);
+  [[nodiscard]] Status poll(std::chrono::milliseconds timeout);
 
   /// Polls until every frame sent so far is acknowledged; kTimeout after `timeout`.
-  Status drain(std::chrono::milliseconds timeout);
+  [[nodiscard]] Status drain(std::chrono::milliseconds timeout);
 
   /// Asks for a status and waits for one that reflects the query; kTimeout after `timeout`.
-  Result<StatusMsg> query_status(std::chrono::milliseconds timeout);
+  [[nodiscard]] Result<StatusMsg> query_status(std::chrono::milliseconds timeout);
 
   /// The latest status (nullptr before the first after a handshake).
   [[nodiscard]] const StatusMsg* status() const { return has_status_ ? &status_ : nullptr; }
@@ -96,12 +96,12 @@ class HostLink {
     std::uint32_t seq;
     std::vector<std::uint8_t> bytes;
   };
-  Status transmit(std::vector<std::uint8_t> frame_bytes, std::uint32_t seq);
-  Status resend_unacked();
-  Status read_available(std::chrono::milliseconds timeout);
+  [[nodiscard]] Status transmit(std::vector<std::uint8_t> frame_bytes, std::uint32_t seq);
+  [[nodiscard]] Status resend_unacked();
+  [[nodiscard]] Status read_available(std::chrono::milliseconds timeout);
   void handle_frame(Frame frame);
   void on_status(const StatusMsg& status);
-  Status check_timers();
+  [[nodiscard]] Status check_timers();
 
   Transport& transport_;
   LinkOptions options_;

@@ -1,7 +1,9 @@
-// device/protocol/messages.cpp: payload encoders and validating decoders of every message.
+// device/protocol/messages.cpp: each message's fields listed once, in wire order, walked by one
+// encoder and one validating decoder.
 #include "device/protocol/messages.h"
 
 #include <string>
+#include <type_traits>
 
 #include "device/protocol/internal/byte_io.h"
 
@@ -15,366 +17,339 @@ namespace {
 // Upper bounds that keep a corrupt or hostile payload from asking for absurd allocations.
 constexpr std::size_t kMaxInks = 16;
 
-std::unexpected<Error> malformed(const char* msg, const std::string& what) {
-  return fail(ErrorCode::kMalformedFrame, std::string(msg) + ": " + what);
+std::unexpected<Error> malformed(const std::string& msg, const std::string& what) {
+  return fail(ErrorCode::kMalformedFrame, msg + ": " + what);
 }
 
-// Ends a decode: a truncated field or trailing bytes make the payload malformed.
-Status finish(const ByteReader& r, const char* msg) {
-  if (!r.ok()) return malformed(msg, std::string("field '") + r.failed_field() + "' truncated");
-  if (r.remaining() != 0)
-    return malformed(msg, std::to_string(r.remaining()) + " unexpected trailing bytes");
+// The unsigned integer of the same width as a field's type (enums by their underlying type).
+template <class T>
+using WireUnsigned = std::make_unsigned_t<
+    typename std::conditional_t<std::is_enum_v<T>, std::underlying_type<T>, std::type_identity<T>>::type>;
+
+// Walks a message's field list and appends each field to the payload.
+class Encoder {
+ public:
+  explicit Encoder(std::vector<std::uint8_t>& out) : w_(out) {}
+  template <class T>
+  void field(const T& v, const char* /*name*/) {
+    const auto u = static_cast<WireUnsigned<T>>(v);
+    if constexpr (sizeof u == 1)
+      w_.u8(u);
+    else if constexpr (sizeof u == 2)
+      w_.u16(u);
+    else if constexpr (sizeof u == 4)
+      w_.u32(u);
+    else
+      w_.u64(u);
+  }
+  void text(const std::string& s, const char* /*name*/) { w_.str(s); }
+  /// A u8 count, then the items.
+  template <class T>
+  void list(const std::vector<T>& items, const char* /*count*/, const char* item, const char* /*noun*/) {
+    w_.u8(static_cast<std::uint8_t>(items.size()));
+    for (const auto& x : items) {
+      if constexpr (std::is_same_v<T, std::string>)
+        text(x, item);
+      else
+        field(x, item);
+    }
+  }
+  void rest(const std::span<const std::uint8_t>& data) { w_.bytes(data); }
+
+ private:
+  ByteWriter w_;
+};
+
+// Walks a message's field list and reads each field from the payload; the first truncated field
+// or over-long list is kept for finish().
+class Decoder {
+ public:
+  explicit Decoder(std::span<const std::uint8_t> in) : r_(in) {}
+  template <class T>
+  void field(T& v, const char* name) {
+    using U = WireUnsigned<T>;
+    U u;
+    if constexpr (sizeof(U) == 1)
+      u = r_.u8(name);
+    else if constexpr (sizeof(U) == 2)
+      u = r_.u16(name);
+    else if constexpr (sizeof(U) == 4)
+      u = r_.u32(name);
+    else
+      u = r_.u64(name);
+    v = static_cast<T>(u);
+  }
+  void text(std::string& s, const char* name) { s = r_.str(name); }
+  template <class T>
+  void list(std::vector<T>& items, const char* count, const char* item, const char* noun) {
+    const std::size_t n = r_.u8(count);
+    if (n > kMaxInks) {
+      if (limit_.empty()) limit_ = std::to_string(n) + " " + noun + " (limit " + std::to_string(kMaxInks) + ")";
+      return;
+    }
+    for (std::size_t i = 0; i < n && r_.ok(); ++i) {
+      T x{};
+      if constexpr (std::is_same_v<T, std::string>)
+        text(x, item);
+      else
+        field(x, item);
+      items.push_back(std::move(x));
+    }
+  }
+  void rest(std::span<const std::uint8_t>& data) { data = r_.rest(); }
+
+  /// Ends a decode: an over-long list, a truncated field or trailing bytes make it malformed.
+  Status finish(const char* msg) const {
+    if (!limit_.empty()) return malformed(msg, limit_);
+    if (!r_.ok()) return malformed(msg, std::string("field '") + r_.failed_field() + "' truncated");
+    if (r_.remaining() != 0) return malformed(msg, std::to_string(r_.remaining()) + " unexpected trailing bytes");
+    return {};
+  }
+
+ private:
+  ByteReader r_;
+  std::string limit_;
+};
+
+// ---- The field lists: one per message, in wire order. ----
+
+template <class IO>
+void fields(IO& io, HelloMsg& m) {
+  io.field(m.min_version, "min_version");
+  io.field(m.max_version, "max_version");
+  io.field(m.max_payload_bytes, "max_payload_bytes");
+  io.text(m.host, "host");
+}
+
+template <class IO>
+void fields(IO& io, IdentifyMsg& m) {
+  io.field(m.protocol_version, "protocol_version");
+  io.field(m.min_version, "min_version");
+  io.field(m.max_version, "max_version");
+  io.text(m.model, "model");
+  io.text(m.ieee1284_id, "ieee1284_id");
+  io.text(m.firmware, "firmware");
+  io.field(m.max_payload_bytes, "max_payload_bytes");
+  io.field(m.dpi_x, "dpi_x");
+  io.field(m.dpi_y, "dpi_y");
+  io.field(m.nozzles_per_ink, "nozzles_per_ink");
+  io.field(m.bits_per_pixel, "bits_per_pixel");
+  io.list(m.inks, "ink_count", "ink_name", "inks");
+  io.field(m.swath_slots, "swath_slots");
+  io.field(m.swath_buffer_bytes, "swath_buffer_bytes");
+  io.field(m.print_width_um, "print_width_um");
+}
+
+template <class IO>
+void fields(IO& io, JobBeginMsg& m) {
+  io.field(m.job_id, "job_id");
+  io.text(m.name, "name");
+  io.field(m.first_swath, "first_swath");
+  io.field(m.fabric_width_px, "fabric_width_px");
+  io.field(m.fabric_pos_um, "fabric_pos_um");
+}
+
+template <class IO>
+void fields(IO& io, JobEndMsg& m) {
+  io.field(m.swath_count, "swath_count");
+  io.field(m.final_feed_um, "final_feed_um");
+}
+
+template <class IO>
+void fields(IO& io, SwathHeaderMsg& m) {
+  SwathHeader& h = m.header;
+  io.field(h.index, "index");
+  io.field(h.pass, "pass");
+  io.field(h.direction, "direction");
+  io.field(h.first_row, "first_row");
+  io.field(h.row_step, "row_step");
+  io.field(h.rows, "rows");
+  io.field(h.x_start_px, "x_start_px");
+  io.field(h.width_px, "width_px");
+  io.field(h.channels, "channels");
+  io.field(h.bits_per_pixel, "bits_per_pixel");
+  io.field(h.feed_before_um, "feed_before_um");
+  io.field(h.compression, "compression");
+  io.field(h.raw_bytes, "raw_bytes");
+  io.field(m.data_bytes, "data_bytes");
+  io.field(m.data_crc32, "data_crc32");
+}
+
+template <class IO>
+void fields(IO& io, SwathDataMsg& m) {
+  io.field(m.swath_index, "swath_index");
+  io.field(m.offset, "offset");
+  io.rest(m.data);
+}
+
+template <class IO>
+void fields(IO& io, FeedMsg& m) {
+  io.field(m.feed_um, "feed_um");
+}
+
+template <class IO>
+void fields(IO& io, CutterCueMsg& m) {
+  io.field(m.cue_id, "cue_id");
+  io.field(m.kind, "kind");
+  io.field(m.position_um, "position_um");
+  io.field(m.x_um, "x_um");
+}
+
+template <class IO>
+void fields(IO& io, CueDoneMsg& m) {
+  io.field(m.cue_id, "cue_id");
+}
+
+template <class IO>
+void fields(IO& io, AbortMsg& m) {
+  io.text(m.reason, "reason");
+}
+
+template <class IO>
+void fields(IO& io, StatusMsg& m) {
+  io.field(m.ack_seq, "ack_seq");
+  io.field(m.naks, "naks");
+  io.field(m.state, "state");
+  io.field(m.condition, "condition");
+  io.field(m.job_id, "job_id");
+  io.field(m.swath_next, "swath_next");
+  io.field(m.printed_next, "printed_next");
+  io.field(m.free_slots, "free_slots");
+  io.field(m.free_bytes, "free_bytes");
+  io.field(m.fabric_pos_um, "fabric_pos_um");
+  io.field(m.cue_waiting, "cue_waiting");
+  io.field(m.cues_registered, "cues_registered");
+  io.field(m.last_job_id, "last_job_id");
+  io.field(m.last_outcome, "last_outcome");
+  io.field(m.rx_crc_errors, "rx_crc_errors");
+  io.field(m.rx_gaps, "rx_gaps");
+  io.field(m.printed_fabric_um, "printed_fabric_um");
+  io.field(m.queued_fabric_um, "queued_fabric_um");
+  io.field(m.last_printed_next, "last_printed_next");
+  io.field(m.last_printed_fabric_um, "last_printed_fabric_um");
+  io.field(m.last_fabric_pos_um, "last_fabric_pos_um");
+}
+
+template <class IO>
+void fields(IO& io, RejectMsg& m) {
+  io.field(m.refused, "refused");
+  io.field(m.seq, "seq");
+  io.field(m.code, "code");
+  io.text(m.message, "message");
+}
+
+template <class IO>
+void fields(IO& io, JobReportMsg& m) {
+  io.field(m.job_id, "job_id");
+  io.text(m.name, "name");
+  io.field(m.outcome, "outcome");
+  io.field(m.condition, "condition");
+  io.field(m.first_swath, "first_swath");
+  io.field(m.swaths_printed, "swaths_printed");
+  io.field(m.feed_travel_um, "feed_travel_um");
+  io.field(m.print_time_us, "print_time_us");
+  io.field(m.cues_fired, "cues_fired");
+  io.field(m.overruns, "overruns");
+  io.list(m.drops_per_ink, "ink_count", "drops", "inks");
+}
+
+// Messages without payload have no fields.
+template <class IO>
+void fields(IO&, StatusQueryMsg&) {}
+template <class IO>
+void fields(IO&, ReportQueryMsg&) {}
+template <class IO>
+void fields(IO&, PauseMsg&) {}
+template <class IO>
+void fields(IO&, ResumeMsg&) {}
+
+// ---- Checks of decoded values beyond their layout (enum ranges, reserved values). ----
+
+bool valid(PrinterState v) { return v <= PrinterState::kAborting; }
+bool valid(PrinterCondition v) { return to_string(v) != "unknown"; }
+bool valid(JobOutcome v) { return v <= JobOutcome::kLost; }
+bool valid(CueKind v) { return v <= CueKind::kNotch; }
+bool valid(CarriageDirection v) { return v <= CarriageDirection::kRightToLeft; }
+bool valid(SwathCompression v) { return v <= SwathCompression::kPackBits; }
+
+template <class E>
+std::string number(E v) {
+  return std::to_string(static_cast<WireUnsigned<E>>(v));
+}
+
+// Fails with "<field> <value> out of range" if an enum field holds a value outside its type.
+template <class E>
+Status in_range(const std::string& msg, const char* field, E v) {
+  if (!valid(v)) return malformed(msg, std::string(field) + " " + number(v) + " out of range");
   return {};
 }
 
-bool valid_state(std::uint8_t v) { return v <= static_cast<std::uint8_t>(PrinterState::kAborting); }
-bool valid_condition(std::uint16_t v) {
-  return to_string(static_cast<PrinterCondition>(v)) != "unknown";
-}
-bool valid_outcome(std::uint8_t v) { return v <= static_cast<std::uint8_t>(JobOutcome::kLost); }
-
-}  // namespace
-
-void encode(const HelloMsg& m, std::vector<std::uint8_t>& out) {
-  ByteWriter w(out);
-  w.u16(m.min_version);
-  w.u16(m.max_version);
-  w.u32(m.max_payload_bytes);
-  w.str(m.host);
+template <class M>
+Status check(const M&) {
+  return {};
 }
 
-Result<HelloMsg> decode_hello(std::span<const std::uint8_t> payload) {
-  ByteReader r(payload);
-  HelloMsg m;
-  m.min_version = r.u16("min_version");
-  m.max_version = r.u16("max_version");
-  m.max_payload_bytes = r.u32("max_payload_bytes");
-  m.host = r.str("host");
-  if (auto s = finish(r, "hello"); !s) return fail(s.error());
+Status check(const HelloMsg& m) {
   if (m.min_version > m.max_version)
     return malformed("hello", "min_version " + std::to_string(m.min_version) + " above max_version " +
                                   std::to_string(m.max_version));
-  return m;
+  return {};
 }
 
-void encode(const IdentifyMsg& m, std::vector<std::uint8_t>& out) {
-  ByteWriter w(out);
-  w.u16(m.protocol_version);
-  w.u16(m.min_version);
-  w.u16(m.max_version);
-  w.str(m.model);
-  w.str(m.ieee1284_id);
-  w.str(m.firmware);
-  w.u32(m.max_payload_bytes);
-  w.i32(m.dpi_x);
-  w.i32(m.dpi_y);
-  w.u16(m.nozzles_per_ink);
-  w.u8(m.bits_per_pixel);
-  w.u8(static_cast<std::uint8_t>(m.inks.size()));
-  for (const auto& ink : m.inks) w.str(ink);
-  w.u16(m.swath_slots);
-  w.u32(m.swath_buffer_bytes);
-  w.u32(m.print_width_um);
+Status check(const SwathHeaderMsg& m) {
+  const std::string where = "swath_header (swath " + std::to_string(m.header.index) + ")";
+  if (auto s = in_range(where, "direction", m.header.direction); !s) return s;
+  return in_range(where, "compression", m.header.compression);
 }
 
-Result<IdentifyMsg> decode_identify(std::span<const std::uint8_t> payload) {
-  ByteReader r(payload);
-  IdentifyMsg m;
-  m.protocol_version = r.u16("protocol_version");
-  m.min_version = r.u16("min_version");
-  m.max_version = r.u16("max_version");
-  m.model = r.str("model");
-  m.ieee1284_id = r.str("ieee1284_id");
-  m.firmware = r.str("firmware");
-  m.max_payload_bytes = r.u32("max_payload_bytes");
-  m.dpi_x = r.i32("dpi_x");
-  m.dpi_y = r.i32("dpi_y");
-  m.nozzles_per_ink = r.u16("nozzles_per_ink");
-  m.bits_per_pixel = r.u8("bits_per_pixel");
-  const std::size_t n_inks = r.u8("ink_count");
-  if (n_inks > kMaxInks) return malformed("identify", std::to_string(n_inks) + " inks (limit 16)");
-  for (std::size_t i = 0; i < n_inks && r.ok(); ++i) m.inks.push_back(r.str("ink_name"));
-  m.swath_slots = r.u16("swath_slots");
-  m.swath_buffer_bytes = r.u32("swath_buffer_bytes");
-  m.print_width_um = r.u32("print_width_um");
-  if (auto s = finish(r, "identify"); !s) return fail(s.error());
-  return m;
-}
-
-void encode(const JobBeginMsg& m, std::vector<std::uint8_t>& out) {
-  ByteWriter w(out);
-  w.u64(m.job_id);
-  w.str(m.name);
-  w.u32(m.first_swath);
-  w.u32(m.fabric_width_px);
-  w.i64(m.fabric_pos_um);
-}
-
-Result<JobBeginMsg> decode_job_begin(std::span<const std::uint8_t> payload) {
-  ByteReader r(payload);
-  JobBeginMsg m;
-  m.job_id = r.u64("job_id");
-  m.name = r.str("name");
-  m.first_swath = r.u32("first_swath");
-  m.fabric_width_px = r.u32("fabric_width_px");
-  m.fabric_pos_um = r.i64("fabric_pos_um");
-  if (auto s = finish(r, "job_begin"); !s) return fail(s.error());
-  return m;
-}
-
-void encode(const JobEndMsg& m, std::vector<std::uint8_t>& out) {
-  ByteWriter w(out);
-  w.u32(m.swath_count);
-  w.u32(m.final_feed_um);
-}
-
-Result<JobEndMsg> decode_job_end(std::span<const std::uint8_t> payload) {
-  ByteReader r(payload);
-  JobEndMsg m;
-  m.swath_count = r.u32("swath_count");
-  m.final_feed_um = r.u32("final_feed_um");
-  if (auto s = finish(r, "job_end"); !s) return fail(s.error());
-  return m;
-}
-
-void encode(const SwathHeaderMsg& m, std::vector<std::uint8_t>& out) {
-  ByteWriter w(out);
-  const SwathHeader& h = m.header;
-  w.u32(h.index);
-  w.u16(h.pass);
-  w.u8(static_cast<std::uint8_t>(h.direction));
-  w.i64(h.first_row);
-  w.u16(h.row_step);
-  w.u32(h.rows);
-  w.i32(h.x_start_px);
-  w.u32(h.width_px);
-  w.u8(h.channels);
-  w.u8(h.bits_per_pixel);
-  w.u32(h.feed_before_um);
-  w.u8(static_cast<std::uint8_t>(h.compression));
-  w.u32(h.raw_bytes);
-  w.u32(m.data_bytes);
-  w.u32(m.data_crc32);
-}
-
-Result<SwathHeaderMsg> decode_swath_header(std::span<const std::uint8_t> payload) {
-  ByteReader r(payload);
-  SwathHeaderMsg m;
-  SwathHeader& h = m.header;
-  h.index = r.u32("index");
-  h.pass = r.u16("pass");
-  const std::uint8_t dir = r.u8("direction");
-  h.first_row = r.i64("first_row");
-  h.row_step = r.u16("row_step");
-  h.rows = r.u32("rows");
-  h.x_start_px = r.i32("x_start_px");
-  h.width_px = r.u32("width_px");
-  h.channels = r.u8("channels");
-  h.bits_per_pixel = r.u8("bits_per_pixel");
-  h.feed_before_um = r.u32("feed_before_um");
-  const std::uint8_t comp = r.u8("compression");
-  h.raw_bytes = r.u32("raw_bytes");
-  m.data_bytes = r.u32("data_bytes");
-  m.data_crc32 = r.u32("data_crc32");
-  if (auto s = finish(r, "swath_header"); !s) return fail(s.error());
-  const std::string where = "swath_header (swath " + std::to_string(h.index) + ")";
-  if (dir > 1) return malformed(where.c_str(), "direction " + std::to_string(dir) + " out of range");
-  if (comp > 1) return malformed(where.c_str(), "compression " + std::to_string(comp) + " out of range");
-  h.direction = static_cast<CarriageDirection>(dir);
-  h.compression = static_cast<SwathCompression>(comp);
-  return m;
-}
-
-void encode(const SwathDataMsg& m, std::vector<std::uint8_t>& out) {
-  ByteWriter w(out);
-  w.u32(m.swath_index);
-  w.u32(m.offset);
-  w.bytes(m.data);
-}
-
-Result<SwathDataMsg> decode_swath_data(std::span<const std::uint8_t> payload) {
-  ByteReader r(payload);
-  SwathDataMsg m;
-  m.swath_index = r.u32("swath_index");
-  m.offset = r.u32("offset");
-  if (!r.ok()) return malformed("swath_data", std::string("field '") + r.failed_field() + "' truncated");
-  m.data = r.rest();
-  return m;
-}
-
-void encode(const FeedMsg& m, std::vector<std::uint8_t>& out) { ByteWriter(out).u32(m.feed_um); }
-
-Result<FeedMsg> decode_feed(std::span<const std::uint8_t> payload) {
-  ByteReader r(payload);
-  FeedMsg m;
-  m.feed_um = r.u32("feed_um");
-  if (auto s = finish(r, "feed"); !s) return fail(s.error());
-  return m;
-}
-
-void encode(const CutterCueMsg& m, std::vector<std::uint8_t>& out) {
-  ByteWriter w(out);
-  w.u32(m.cue_id);
-  w.u8(static_cast<std::uint8_t>(m.kind));
-  w.i64(m.position_um);
-  w.i32(m.x_um);
-}
-
-Result<CutterCueMsg> decode_cutter_cue(std::span<const std::uint8_t> payload) {
-  ByteReader r(payload);
-  CutterCueMsg m;
-  m.cue_id = r.u32("cue_id");
-  const std::uint8_t kind = r.u8("kind");
-  m.position_um = r.i64("position_um");
-  m.x_um = r.i32("x_um");
-  if (auto s = finish(r, "cutter_cue"); !s) return fail(s.error());
-  if (kind > 1) return malformed("cutter_cue", "kind " + std::to_string(kind) + " out of range");
+Status check(const CutterCueMsg& m) {
+  if (auto s = in_range("cutter_cue", "kind", m.kind); !s) return s;
   if (m.cue_id == 0) return malformed("cutter_cue", "cue_id 0 is reserved");
-  m.kind = static_cast<CueKind>(kind);
+  return {};
+}
+
+Status check(const StatusMsg& m) {
+  if (auto s = in_range("status", "state", m.state); !s) return s;
+  if (auto s = in_range("status", "condition", m.condition); !s) return s;
+  return in_range("status", "last_outcome", m.last_outcome);
+}
+
+Status check(const RejectMsg& m) {
+  if (!is_message_type(static_cast<std::uint8_t>(m.refused)))
+    return malformed("reject", "refused type " + number(m.refused) + " unknown");
+  if (to_string(m.code) == "unknown") return malformed("reject", "code " + number(m.code) + " unknown");
+  return {};
+}
+
+Status check(const JobReportMsg& m) {
+  if (auto s = in_range("job_report", "outcome", m.outcome); !s) return s;
+  return in_range("job_report", "condition", m.condition);
+}
+
+template <class M>
+void encode_fields(const M& m, std::vector<std::uint8_t>& out) {
+  Encoder e(out);
+  fields(e, const_cast<M&>(m));  // the encoder only reads the fields
+}
+
+template <class M>
+Result<M> decode_fields(std::span<const std::uint8_t> payload, const char* msg) {
+  Decoder d(payload);
+  M m{};
+  fields(d, m);
+  if (auto s = d.finish(msg); !s) return fail(s.error());
+  if (auto s = check(m); !s) return fail(s.error());
   return m;
 }
 
-void encode(const CueDoneMsg& m, std::vector<std::uint8_t>& out) { ByteWriter(out).u32(m.cue_id); }
+}  // namespace
 
-Result<CueDoneMsg> decode_cue_done(std::span<const std::uint8_t> payload) {
-  ByteReader r(payload);
-  CueDoneMsg m;
-  m.cue_id = r.u32("cue_id");
-  if (auto s = finish(r, "cue_done"); !s) return fail(s.error());
-  return m;
-}
-
-void encode(const AbortMsg& m, std::vector<std::uint8_t>& out) { ByteWriter(out).str(m.reason); }
-
-Result<AbortMsg> decode_abort(std::span<const std::uint8_t> payload) {
-  ByteReader r(payload);
-  AbortMsg m;
-  m.reason = r.str("reason");
-  if (auto s = finish(r, "abort"); !s) return fail(s.error());
-  return m;
-}
-
-void encode(const StatusMsg& m, std::vector<std::uint8_t>& out) {
-  ByteWriter w(out);
-  w.u32(m.ack_seq);
-  w.u32(m.naks);
-  w.u8(static_cast<std::uint8_t>(m.state));
-  w.u16(static_cast<std::uint16_t>(m.condition));
-  w.u64(m.job_id);
-  w.u32(m.swath_next);
-  w.u32(m.printed_next);
-  w.u16(m.free_slots);
-  w.u32(m.free_bytes);
-  w.i64(m.fabric_pos_um);
-  w.u32(m.cue_waiting);
-  w.u32(m.cues_registered);
-  w.u64(m.last_job_id);
-  w.u8(static_cast<std::uint8_t>(m.last_outcome));
-  w.u32(m.rx_crc_errors);
-  w.u32(m.rx_gaps);
-  w.i64(m.printed_fabric_um);
-  w.i64(m.queued_fabric_um);
-  w.u32(m.last_printed_next);
-  w.i64(m.last_printed_fabric_um);
-  w.i64(m.last_fabric_pos_um);
-}
-
-Result<StatusMsg> decode_status(std::span<const std::uint8_t> payload) {
-  ByteReader r(payload);
-  StatusMsg m;
-  m.ack_seq = r.u32("ack_seq");
-  m.naks = r.u32("naks");
-  const std::uint8_t state = r.u8("state");
-  const std::uint16_t cond = r.u16("condition");
-  m.job_id = r.u64("job_id");
-  m.swath_next = r.u32("swath_next");
-  m.printed_next = r.u32("printed_next");
-  m.free_slots = r.u16("free_slots");
-  m.free_bytes = r.u32("free_bytes");
-  m.fabric_pos_um = r.i64("fabric_pos_um");
-  m.cue_waiting = r.u32("cue_waiting");
-  m.cues_registered = r.u32("cues_registered");
-  m.last_job_id = r.u64("last_job_id");
-  const std::uint8_t outcome = r.u8("last_outcome");
-  m.rx_crc_errors = r.u32("rx_crc_errors");
-  m.rx_gaps = r.u32("rx_gaps");
-  m.printed_fabric_um = r.i64("printed_fabric_um");
-  m.queued_fabric_um = r.i64("queued_fabric_um");
-  m.last_printed_next = r.u32("last_printed_next");
-  m.last_printed_fabric_um = r.i64("last_printed_fabric_um");
-  m.last_fabric_pos_um = r.i64("last_fabric_pos_um");
-  if (auto s = finish(r, "status"); !s) return fail(s.error());
-  if (!valid_state(state)) return malformed("status", "state " + std::to_string(state) + " out of range");
-  if (!valid_condition(cond)) return malformed("status", "condition " + std::to_string(cond) + " out of range");
-  if (!valid_outcome(outcome)) return malformed("status", "last_outcome " + std::to_string(outcome) + " out of range");
-  m.state = static_cast<PrinterState>(state);
-  m.condition = static_cast<PrinterCondition>(cond);
-  m.last_outcome = static_cast<JobOutcome>(outcome);
-  return m;
-}
-
-void encode(const RejectMsg& m, std::vector<std::uint8_t>& out) {
-  ByteWriter w(out);
-  w.u8(static_cast<std::uint8_t>(m.refused));
-  w.u32(m.seq);
-  w.u16(static_cast<std::uint16_t>(m.code));
-  w.str(m.message);
-}
-
-Result<RejectMsg> decode_reject(std::span<const std::uint8_t> payload) {
-  ByteReader r(payload);
-  RejectMsg m;
-  const std::uint8_t refused = r.u8("refused");
-  m.seq = r.u32("seq");
-  const std::uint16_t code = r.u16("code");
-  m.message = r.str("message");
-  if (auto s = finish(r, "reject"); !s) return fail(s.error());
-  if (!is_message_type(refused)) return malformed("reject", "refused type " + std::to_string(refused) + " unknown");
-  if (to_string(static_cast<ErrorCode>(code)) == "unknown")
-    return malformed("reject", "code " + std::to_string(code) + " unknown");
-  m.refused = static_cast<MessageType>(refused);
-  m.code = static_cast<ErrorCode>(code);
-  return m;
-}
-
-void encode(const JobReportMsg& m, std::vector<std::uint8_t>& out) {
-  ByteWriter w(out);
-  w.u64(m.job_id);
-  w.str(m.name);
-  w.u8(static_cast<std::uint8_t>(m.outcome));
-  w.u16(static_cast<std::uint16_t>(m.condition));
-  w.u32(m.first_swath);
-  w.u32(m.swaths_printed);
-  w.i64(m.feed_travel_um);
-  w.u64(m.print_time_us);
-  w.u32(m.cues_fired);
-  w.u32(m.overruns);
-  w.u8(static_cast<std::uint8_t>(m.drops_per_ink.size()));
-  for (auto d : m.drops_per_ink) w.u64(d);
-}
-
-Result<JobReportMsg> decode_job_report(std::span<const std::uint8_t> payload) {
-  ByteReader r(payload);
-  JobReportMsg m;
-  m.job_id = r.u64("job_id");
-  m.name = r.str("name");
-  const std::uint8_t outcome = r.u8("outcome");
-  const std::uint16_t cond = r.u16("condition");
-  m.first_swath = r.u32("first_swath");
-  m.swaths_printed = r.u32("swaths_printed");
-  m.feed_travel_um = r.i64("feed_travel_um");
-  m.print_time_us = r.u64("print_time_us");
-  m.cues_fired = r.u32("cues_fired");
-  m.overruns = r.u32("overruns");
-  const std::size_t n_inks = r.u8("ink_count");
-  if (n_inks > kMaxInks) return malformed("job_report", std::to_string(n_inks) + " inks (limit 16)");
-  for (std::size_t i = 0; i < n_inks && r.ok(); ++i) m.drops_per_ink.push_back(r.u64("drops"));
-  if (auto s = finish(r, "job_report"); !s) return fail(s.error());
-  if (!valid_outcome(outcome)) return malformed("job_report", "outcome " + std::to_string(outcome) + " out of range");
-  if (!valid_condition(cond)) return malformed("job_report", "condition " + std::to_string(cond) + " out of range");
-  m.outcome = static_cast<JobOutcome>(outcome);
-  m.condition = static_cast<PrinterCondition>(cond);
-  return m;
-}
+#define TP_MESSAGE_CODEC(name, code, wire, Payload)                                        \
+  void encode(const Payload& m, std::vector<std::uint8_t>& out) { encode_fields(m, out); } \
+  Result<Payload> decode_##wire(std::span<const std::uint8_t> payload) {                   \
+    return decode_fields<Payload>(payload, #wire);                                         \
+  }
+TP_PROTOCOL_MESSAGES(TP_MESSAGE_CODEC)
+#undef TP_MESSAGE_CODEC
 
 }  // namespace tp::device

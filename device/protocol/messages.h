@@ -1,7 +1,8 @@
 // device/protocol/messages.h: the payloads of every protocol message and their encoding.
 //
-// Each message has a struct, an encoder that appends its payload to a byte vector and a decoder
-// that checks lengths and enum values and names the offending field on failure. Frames wrap
+// Each message of message_table.h has a struct here; messages.cpp lists its fields once, in wire
+// order, and derives from that list the encoder (appends the payload to a byte vector) and the
+// decoder (checks lengths and enum values and names the offending field on failure). Frames wrap
 // these payloads (frame.h); docs/protocol.md describes the exchange.
 #pragma once
 
@@ -142,35 +143,25 @@ struct JobReportMsg {
   std::vector<std::uint64_t> drops_per_ink;
 };
 
-void encode(const HelloMsg& m, std::vector<std::uint8_t>& out);
-void encode(const IdentifyMsg& m, std::vector<std::uint8_t>& out);
-void encode(const JobBeginMsg& m, std::vector<std::uint8_t>& out);
-void encode(const JobEndMsg& m, std::vector<std::uint8_t>& out);
-void encode(const SwathHeaderMsg& m, std::vector<std::uint8_t>& out);
-void encode(const SwathDataMsg& m, std::vector<std::uint8_t>& out);
-void encode(const FeedMsg& m, std::vector<std::uint8_t>& out);
-void encode(const CutterCueMsg& m, std::vector<std::uint8_t>& out);
-void encode(const CueDoneMsg& m, std::vector<std::uint8_t>& out);
-void encode(const AbortMsg& m, std::vector<std::uint8_t>& out);
-void encode(const StatusMsg& m, std::vector<std::uint8_t>& out);
-void encode(const RejectMsg& m, std::vector<std::uint8_t>& out);
-void encode(const JobReportMsg& m, std::vector<std::uint8_t>& out);
+/// Messages without payload: they must arrive with an empty one.
+struct StatusQueryMsg {};
+struct ReportQueryMsg {};
+struct PauseMsg {};
+struct ResumeMsg {};
 
-/// Decoders fail with kMalformedFrame naming the message and field ("swath_header: field
-/// 'width_px' truncated", "status: state 9 out of range").
-Result<HelloMsg> decode_hello(std::span<const std::uint8_t> payload);
-Result<IdentifyMsg> decode_identify(std::span<const std::uint8_t> payload);
-Result<JobBeginMsg> decode_job_begin(std::span<const std::uint8_t> payload);
-Result<JobEndMsg> decode_job_end(std::span<const std::uint8_t> payload);
-Result<SwathHeaderMsg> decode_swath_header(std::span<const std::uint8_t> payload);
-Result<SwathDataMsg> decode_swath_data(std::span<const std::uint8_t> payload);
-Result<FeedMsg> decode_feed(std::span<const std::uint8_t> payload);
-Result<CutterCueMsg> decode_cutter_cue(std::span<const std::uint8_t> payload);
-Result<CueDoneMsg> decode_cue_done(std::span<const std::uint8_t> payload);
-Result<AbortMsg> decode_abort(std::span<const std::uint8_t> payload);
-Result<StatusMsg> decode_status(std::span<const std::uint8_t> payload);
-Result<RejectMsg> decode_reject(std::span<const std::uint8_t> payload);
-Result<JobReportMsg> decode_job_report(std::span<const std::uint8_t> payload);
+/// encode(m, out) appends a message's payload to `out`; one overload per message of
+/// message_table.h.
+#define TP_MESSAGE_ENCODE_DECL(name, code, wire, Payload) void encode(const Payload& m, std::vector<std::uint8_t>& out);
+TP_PROTOCOL_MESSAGES(TP_MESSAGE_ENCODE_DECL)
+#undef TP_MESSAGE_ENCODE_DECL
+
+/// decode_<wire name>(payload) for every message of message_table.h. Decoders fail with
+/// kMalformedFrame naming the message and field ("swath_header: field 'width_px' truncated",
+/// "status: state 9 out of range").
+#define TP_MESSAGE_DECODE_DECL(name, code, wire, Payload) \
+  [[nodiscard]] Result<Payload> decode_##wire(std::span<const std::uint8_t> payload);
+TP_PROTOCOL_MESSAGES(TP_MESSAGE_DECODE_DECL)
+#undef TP_MESSAGE_DECODE_DECL
 
 /// Payload bytes of a swath data message carrying `chunk_bytes` of data.
 inline constexpr std::size_t kSwathDataOverheadBytes = 8;

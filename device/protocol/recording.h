@@ -30,12 +30,13 @@ struct WireRecord {
 class RecordingTransport final : public Transport {
  public:
   /// Creates (truncates) `path`. Fails with kInvalidArgument if it cannot be written.
-  static Result<std::unique_ptr<RecordingTransport>> create(Transport& inner, const std::filesystem::path& path);
+  [[nodiscard]] static Result<std::unique_ptr<RecordingTransport>> create(Transport& inner,
+                                                                          const std::filesystem::path& path);
 
-  Status write(std::span<const std::uint8_t> bytes) override;
-  Result<std::size_t> read(std::span<std::uint8_t> buffer, std::chrono::milliseconds timeout) override;
-  Status reset() override;
-  Status reconnect(std::chrono::milliseconds timeout) override;
+  [[nodiscard]] Status write(std::span<const std::uint8_t> bytes) override;
+  [[nodiscard]] Result<std::size_t> read(std::span<std::uint8_t> buffer, std::chrono::milliseconds timeout) override;
+  [[nodiscard]] Status reset() override;
+  [[nodiscard]] Status reconnect(std::chrono::milliseconds timeout) override;
   std::string describe() const override;
 
  private:
@@ -50,9 +51,10 @@ class RecordingTransport final : public Transport {
 
 /// Reads a whole recording. Fails with kMalformedFrame naming the file and record number if the
 /// magic is wrong or a record is truncated.
-Result<std::vector<WireRecord>> read_recording(const std::filesystem::path& path);
+[[nodiscard]] Result<std::vector<WireRecord>> read_recording(const std::filesystem::path& path);
 
 /// Same, from bytes in memory (`name` appears in errors).
-Result<std::vector<WireRecord>> parse_recording(std::span<const std::uint8_t> bytes, const std::string& name);
+[[nodiscard]] Result<std::vector<WireRecord>> parse_recording(std::span<const std::uint8_t> bytes,
+                                                              const std::string& name);
 
 }  // namespace tp::device

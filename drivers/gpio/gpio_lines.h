@@ -27,19 +27,19 @@ class GpioLines {
  public:
   /// Opens the chip and requests the four lines (outputs driven low). Fails with kNotFound
   /// naming the chip or the missing line, kBusy if a line is held by another consumer.
-  static Result<std::unique_ptr<GpioLines>> open(const GpioConfig& config);
+  [[nodiscard]] static Result<std::unique_ptr<GpioLines>> open(const GpioConfig& config);
   ~GpioLines();
   GpioLines(const GpioLines&) = delete;
   GpioLines& operator=(const GpioLines&) = delete;
 
   /// Drives an output line (true = active).
-  Status set(GpioOutput output, bool active);
+  [[nodiscard]] Status set(GpioOutput output, bool active);
   /// Drives the line active for `width`, then inactive again.
-  Status pulse(GpioOutput output, std::chrono::microseconds width);
+  [[nodiscard]] Status pulse(GpioOutput output, std::chrono::microseconds width);
   /// True when the cutter reports ready.
-  Result<bool> cutter_ready();
+  [[nodiscard]] Result<bool> cutter_ready();
   /// True while the emergency stop is pressed.
-  Result<bool> emergency_stop();
+  [[nodiscard]] Result<bool> emergency_stop();
   [[nodiscard]] const GpioConfig& config() const { return config_; }
 
   struct Impl;

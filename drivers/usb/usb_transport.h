@@ -51,24 +51,25 @@ class UsbTransport final : public device::Transport {
  public:
   /// Finds and claims the printer, retrying until `find_timeout`. Fails with kNotFound (names
   /// what was looked for and what printer-class devices were seen), kAccess, kBusy or kIo.
-  static Result<std::unique_ptr<UsbTransport>> open(const UsbOptions& options,
-                                                    std::chrono::milliseconds find_timeout = std::chrono::milliseconds(0));
+  [[nodiscard]] static Result<std::unique_ptr<UsbTransport>> open(
+      const UsbOptions& options, std::chrono::milliseconds find_timeout = std::chrono::milliseconds(0));
   ~UsbTransport() override;
   UsbTransport(const UsbTransport&) = delete;
   UsbTransport& operator=(const UsbTransport&) = delete;
 
-  device::Status write(std::span<const std::uint8_t> bytes) override;
-  device::Result<std::size_t> read(std::span<std::uint8_t> buffer, std::chrono::milliseconds timeout) override;
-  device::Status reset() override;
-  device::Status reconnect(std::chrono::milliseconds timeout) override;
+  [[nodiscard]] device::Status write(std::span<const std::uint8_t> bytes) override;
+  [[nodiscard]] device::Result<std::size_t> read(std::span<std::uint8_t> buffer,
+                                                 std::chrono::milliseconds timeout) override;
+  [[nodiscard]] device::Status reset() override;
+  [[nodiscard]] device::Status reconnect(std::chrono::milliseconds timeout) override;
   std::string describe() const override;
 
   /// Waits until every bulk OUT transfer has completed (resending after stalls).
-  device::Status drain(std::chrono::milliseconds timeout);
+  [[nodiscard]] device::Status drain(std::chrono::milliseconds timeout);
   /// The printer's IEEE 1284 device ID as read at open.
   [[nodiscard]] std::string device_id() const;
   /// USB GET_PORT_STATUS: bit 0x08 not error, 0x10 selected, 0x20 paper empty.
-  Result<std::uint8_t> port_status();
+  [[nodiscard]] Result<std::uint8_t> port_status();
   [[nodiscard]] UsbStats stats() const;
 
   struct Impl;

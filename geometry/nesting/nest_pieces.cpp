@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <numbers>
 #include <string>
 
 #include "geometry/nesting/strip_nester.h"
@@ -12,7 +13,6 @@
 namespace tp::geometry {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 // Angles this close to a whole number of degrees are snapped to it (grain lines drawn at 90
 // degrees come out of atan2 with rounding noise).
 constexpr double kAngleSnapDeg = 1e-9;
@@ -92,7 +92,7 @@ void add_strip_items(const NestItem& it, size_t index, std::vector<StripItem>& o
 std::vector<double> grain_rotations_deg(Vec2 grain, PieceRotation rule, bool mirrored) {
   const Vec2 f = face_up(grain);
   const Vec2 g = mirrored ? Vec2{-f.x, f.y} : f;
-  const double base = normalise_deg(90.0 - std::atan2(g.y, g.x) * 180.0 / kPi);
+  const double base = normalise_deg(90.0 - std::atan2(g.y, g.x) * 180.0 / std::numbers::pi);
   switch (rule) {
     case PieceRotation::kOneWay: return {base};
     case PieceRotation::kGrainBothWays: return {base, normalise_deg(base + 180)};

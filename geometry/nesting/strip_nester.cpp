@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cmath>
 #include <memory>
+#include <numbers>
 #include <string>
 
 #include "geometry/nesting/internal/constructive.h"
@@ -21,7 +22,6 @@ namespace {
 
 using namespace nesting;
 
-constexpr double kPi = 3.14159265358979323846;
 // Every collision outline is grown by this fraction of the instance size beyond the clearance, so
 // that floating-point rounding can never turn a legal layout into one with a sliver of overlap.
 constexpr double kSafetyClearanceRel = 1e-7;
@@ -99,11 +99,12 @@ Result<std::unique_ptr<NestContext>> build_context(const StripProblem& p, const 
     std::vector<OrientedShape> oriented;
     bool fits = false;
     for (const StripPose& q : it.poses) {
-      Pose pose{static_cast<int>(poses.size()), (it.free_rotation ? 0.0 : q.rotation_deg) * kPi / 180, q.mirror};
+      Pose pose{static_cast<int>(poses.size()), (it.free_rotation ? 0.0 : q.rotation_deg) * std::numbers::pi / 180,
+                q.mirror};
       OrientedShape os = orient(*shape, pose);
       if (it.free_rotation) {
         for (int s = 0; s < kFreeFitSteps && !fits; ++s)
-          fits = orient(*shape, Pose{-1, 2 * kPi * s / kFreeFitSteps, q.mirror}).box.height() <= usable;
+          fits = orient(*shape, Pose{-1, 2 * std::numbers::pi * s / kFreeFitSteps, q.mirror}).box.height() <= usable;
       } else if (os.box.height() > usable) {
         continue;  // this pose does not fit across the strip
       }
@@ -138,7 +139,7 @@ StripPlacement to_placement(const StripProblem& p, const NestContext& ctx, const
   if (placed.pose.index >= 0 && !ctx.free_rotation[type]) {
     out.rotation_deg = ctx.pose_degrees[type][placed.pose.index];
   } else {
-    double deg = std::fmod(placed.pose.angle_rad * 180 / kPi, 360.0);
+    double deg = std::fmod(placed.pose.angle_rad * 180 / std::numbers::pi, 360.0);
     out.rotation_deg = deg < 0 ? deg + 360 : deg;
   }
   out.translation = placed.t;

@@ -3,11 +3,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace tp::geometry {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 /// Deepest subdivision of one Bezier segment (2^16 pieces), a guard against hostile input.
 constexpr int kMaxBezierDepth = 16;
 /// Points closer than this relative to the figure size are the same point when joining arcs.
@@ -46,13 +46,13 @@ double arc_sweep(Vec2 c, Vec2 a, Vec2 m, Vec2 b) {
   double ta = std::atan2(a.y - c.y, a.x - c.x);
   auto ccw_from_a = [&](Vec2 p) {
     double t = std::atan2(p.y - c.y, p.x - c.x) - ta;
-    while (t < 0) t += 2 * kPi;
-    while (t >= 2 * kPi) t -= 2 * kPi;
+    while (t < 0) t += 2 * std::numbers::pi;
+    while (t >= 2 * std::numbers::pi) t -= 2 * std::numbers::pi;
     return t;
   };
   double tb = ccw_from_a(b), tm = ccw_from_a(m);
-  if (tb <= 0) tb = 2 * kPi;  // a closed circle is not an edge; treat a==b as a full turn
-  return tm < tb ? tb : -(2 * kPi - tb);
+  if (tb <= 0) tb = 2 * std::numbers::pi;  // a closed circle is not an edge; treat a==b as a full turn
+  return tm < tb ? tb : -(2 * std::numbers::pi - tb);
 }
 
 Status flatten_arc(Vec2 a, Vec2 b, Vec2 centre, Vec2 mid, double tol, std::vector<Vec2>& out) {
@@ -230,7 +230,7 @@ Edge joined_edges(const Edge& a, const Edge& b) {
       arc_sweep(a.control_mm[0], s, a.control_mm[1], j) * arc_sweep(b.control_mm[0], j, b.control_mm[1], e) > 0) {
     double total = std::abs(arc_sweep(a.control_mm[0], s, a.control_mm[1], j)) +
                    std::abs(arc_sweep(b.control_mm[0], j, b.control_mm[1], e));
-    if (total < 2 * kPi - 1e-6) {
+    if (total < 2 * std::numbers::pi - 1e-6) {
       r.curve = EdgeCurve::kArc;
       r.control_mm = {a.control_mm[0], j};
       return r;

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <numbers>
 #include <set>
 
 #include "geometry/pattern/internal/text.h"
@@ -12,9 +13,8 @@
 namespace tp::geometry {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 /// Corners at a seam end adding up to more than this far from a straight line score zero.
-constexpr double kCornerSlack_rad = kPi / 6;
+constexpr double kCornerSlack_rad = std::numbers::pi / 6;
 /// An edge is at the bottom of its piece (a hem) when all of it lies this close (mm, or 3 % of
 /// the piece height) to the lowest point along the grain.
 constexpr double kHemBand_mm = 10;
@@ -30,7 +30,7 @@ constexpr double kCentreSeamAlongGrain = 0.7;
 struct EdgeInfo {
   int piece = 0, edge = 0;
   double len = 0;
-  double corner_start = kPi, corner_end = kPi;  ///< interior angles at the ends
+  double corner_start = std::numbers::pi, corner_end = std::numbers::pi;  ///< interior angles at the ends
   std::vector<double> notches;                  ///< positions from the start, mm
   double rise = 0;                              ///< height along the grain of the end above the start, mm
   double depth = 0;                             ///< middle of the edge below the piece's top, as a fraction of its height
@@ -48,7 +48,7 @@ struct EdgeInfo {
 double interior_angle(const Edge& in, const Edge& out) {
   Vec2 din = edge_end_direction(in, true), dout = edge_end_direction(out, false);
   double turn = std::atan2(cross(din, dout), dot(din, dout));
-  return kPi - turn;
+  return std::numbers::pi - turn;
 }
 
 std::string base_name(std::string n, bool& generic) {
@@ -116,7 +116,7 @@ std::vector<EdgeInfo> describe(const Pattern& pattern) {
 /// straight line (drafting squares corners so hems and necklines run on), 0 when 30 deg off. Ends
 /// where more pieces meet (underarms) need not, so a seam takes the better of its two ends.
 double corner_score(double sum_at_one_end, double sum_at_other_end) {
-  double dev = std::min(std::abs(sum_at_one_end - kPi), std::abs(sum_at_other_end - kPi));
+  double dev = std::min(std::abs(sum_at_one_end - std::numbers::pi), std::abs(sum_at_other_end - std::numbers::pi));
   return std::max(0.0, 1 - dev / kCornerSlack_rad);
 }
 

@@ -4,12 +4,12 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <numbers>
 #include <string>
 
 namespace tp::geometry {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 /// Most cubics one arc may become; arcs needing more at the requested tolerance are coarser.
 constexpr int kMaxArcCubics = 1024;
 
@@ -249,7 +249,7 @@ std::vector<std::array<Vec2, 3>> svg_arc_to_cubics(const SvgSegment& a, double t
   double rx = a.rx, ry = a.ry;
   if (!(rx > 0) || !(ry > 0)) return straight();
   // Endpoint to centre parameterisation (SVG 1.1 implementation notes F.6.5).
-  double phi = a.x_rotation_deg * kPi / 180, cp = std::cos(phi), sp = std::sin(phi);
+  double phi = a.x_rotation_deg * std::numbers::pi / 180, cp = std::cos(phi), sp = std::sin(phi);
   Vec2 h = (p0 - p1) * 0.5;
   Vec2 q{cp * h.x + sp * h.y, -sp * h.x + cp * h.y};
   double lambda = (q.x * q.x) / (rx * rx) + (q.y * q.y) / (ry * ry);
@@ -271,13 +271,13 @@ std::vector<std::array<Vec2, 3>> svg_arc_to_cubics(const SvgSegment& a, double t
   Vec2 w{(-q.x - cq.x) / rx, (-q.y - cq.y) / ry};
   double theta = angle({1, 0}, u);
   double delta = angle(u, w);
-  if (!a.sweep && delta > 0) delta -= 2 * kPi;
-  if (a.sweep && delta < 0) delta += 2 * kPi;
+  if (!a.sweep && delta > 0) delta -= 2 * std::numbers::pi;
+  if (a.sweep && delta < 0) delta += 2 * std::numbers::pi;
   if (!std::isfinite(theta) || !std::isfinite(delta)) return straight();
   // Quarter turns at most; more pieces until the cubic's radial error (~r (d/2)^6 / 54 for a
   // piece of angle d) is within the tolerance.
   double r = std::max(rx, ry);
-  int n = std::max(1, static_cast<int>(std::ceil(std::abs(delta) / (kPi / 2))));
+  int n = std::max(1, static_cast<int>(std::ceil(std::abs(delta) / (std::numbers::pi / 2))));
   while (n < kMaxArcCubics && r * std::pow(std::abs(delta) / n / 2, 6) / 54 > tolerance) n *= 2;
   n = std::min(n, kMaxArcCubics);
   double step = delta / n;
@@ -331,9 +331,9 @@ Result<Affine2> parse_svg_transform(std::string_view text) {
     } else if (name == "matrix" && count_is({6})) {
       t = Affine2{args[0], args[2], args[4], args[1], args[3], args[5]};
     } else if (name == "skewX" && count_is({1})) {
-      t = Affine2{1, std::tan(args[0] * kPi / 180), 0, 0, 1, 0};
+      t = Affine2{1, std::tan(args[0] * std::numbers::pi / 180), 0, 0, 1, 0};
     } else if (name == "skewY" && count_is({1})) {
-      t = Affine2{1, 0, 0, std::tan(args[0] * kPi / 180), 1, 0};
+      t = Affine2{1, 0, 0, std::tan(args[0] * std::numbers::pi / 180), 1, 0};
     } else {
       return fail(ErrorCode::kParse, "transform: unknown function or wrong argument count: " + std::string(name) + "(" +
                                          std::to_string(args.size()) + " arguments)");

@@ -1,5 +1,6 @@
 // geometry/samples/princess_garments.cpp: the princess-seamed blouse (9 pieces) and dress (10 pieces).
 #include <cmath>
+#include <numbers>
 
 #include "geometry/body/dress_form.h"
 #include "geometry/samples/internal/bodice.h"
@@ -8,8 +9,6 @@
 
 namespace tp::geometry::samples::internal {
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 using Chain = std::vector<std::pair<std::string, std::string>>;
 
@@ -46,7 +45,7 @@ Result<Pattern> draft_princess(const BodyMeasurements& m, const PrincessSpec& sp
   BodiceBlock block = bodice_block(m, spec.bodice);
   std::vector<Piece> panels = princess_panels(block);  // front_l, side_front_l, back_r, side_back_r
   const DressFormLandmarks l = dress_form_landmarks(m);
-  const double r = (m.bust_mm + spec.bodice.bust_ease_mm) / (2 * kPi);
+  const double r = (m.bust_mm + spec.bodice.bust_ease_mm) / (2 * std::numbers::pi);
   for (Piece& pc : panels) pc.placement = pc.role.find("back") != std::string::npos ? back_placement(r, l.waist_y) : front_placement(r, l.waist_y);
 
   Pattern p;
@@ -73,9 +72,9 @@ Result<Pattern> draft_princess(const BodyMeasurements& m, const PrincessSpec& sp
   Piece sleeve = draft_sleeve(m, back_arm, front_arm, spec.sleeve_underarm_mm, m.upper_arm_mm + spec.sleeve_hem_ease_mm);
   {
     // On the left arm: its length along the arm, its face outwards, the crown over the joint.
-    const double a = m.arm_angle_deg * kPi / 180, ca = std::cos(a), sa = std::sin(a);
+    const double a = m.arm_angle_deg * std::numbers::pi / 180, ca = std::cos(a), sa = std::sin(a);
     Box2 bb = bounds(outline(sleeve));
-    const double crown_y = bb.max.y, tube_r = bb.width() / (2 * kPi);
+    const double crown_y = bb.max.y, tube_r = bb.width() / (2 * std::numbers::pi);
     Vec3 n{ca, sa, 0}, up{-sa, ca, 0};
     Vec3 crown = l.arm_joint_left + up * (0.5 * l.upper_arm_radius_mm) + n * tube_r;
     sleeve.placement = Placement3d{{0, -sa, ca, 0, ca, sa, -1, 0, 0}, crown - up * crown_y};

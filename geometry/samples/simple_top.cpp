@@ -1,5 +1,6 @@
 // geometry/samples/simple_top.cpp: the simple top with bust, shoulder and waist darts (4 pieces).
 #include <cmath>
+#include <numbers>
 
 #include "geometry/body/dress_form.h"
 #include "geometry/samples/internal/bodice.h"
@@ -9,13 +10,12 @@
 namespace tp::geometry::samples::internal {
 
 Result<Pattern> draft_simple_top(const BodyMeasurements& m) {
-  constexpr double kPi = 3.14159265358979323846;
   BodiceOptions o;
   BodiceBlock block = bodice_block(m, o);
   auto [front_l, back_r] = simple_top_halves(block);
   const DressFormLandmarks l = dress_form_landmarks(m);
   // The halves wrap a cylinder as wide as the top round the bust.
-  const double r = (m.bust_mm + o.bust_ease_mm) / (2 * kPi);
+  const double r = (m.bust_mm + o.bust_ease_mm) / (2 * std::numbers::pi);
   front_l.placement = front_placement(r, l.waist_y);
   back_r.placement = back_placement(r, l.waist_y);
 

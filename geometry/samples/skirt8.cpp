@@ -1,5 +1,6 @@
 // geometry/samples/skirt8.cpp: the eight-gore skirt with waistband, drafted from measurements.
 #include <cmath>
+#include <numbers>
 #include <string>
 
 #include "geometry/body/dress_form.h"
@@ -9,7 +10,6 @@
 namespace tp::geometry::samples::internal {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr int kGores = 8;
 // Ease over the body: a little at the waist (the band sits there), more at the hip.
 constexpr double kWaistEaseMm = 35;
@@ -62,9 +62,9 @@ Result<Pattern> draft_skirt8(const BodyMeasurements& m) {
     // Gore k is centred at 22.5 + 45 k degrees from the front, towards the wearer's left, so
     // the CF and CB are seams. Its waist sits under the band, tilted out like the cone that
     // runs from the waist to the hem.
-    const double theta = (22.5 + 45.0 * k) * kPi / 180;
-    const double r = waist / (2 * kPi);
-    const double tilt = std::asin(std::min((hem - waist) / (2 * kPi * len), 0.9));
+    const double theta = (22.5 + 45.0 * k) * std::numbers::pi / 180;
+    const double r = waist / (2 * std::numbers::pi);
+    const double tilt = std::asin(std::min((hem - waist) / (2 * std::numbers::pi * len), 0.9));
     g.placement = placement_about_y(theta, {r * std::sin(theta), top_y, r * std::cos(theta)});
     const double c = std::cos(tilt), sn = std::sin(tilt), ct = std::cos(theta), st = std::sin(theta);
     // R_y(theta) * R_x(-tilt): the piece's -y (down) leans outwards.
@@ -84,7 +84,7 @@ Result<Pattern> draft_skirt8(const BodyMeasurements& m) {
     wb.grain = GrainLine{{40, kWaistbandHeightMm / 2}, {waist - 40, kWaistbandHeightMm / 2}};
     for (int k = 1; k < kGores; ++k) add_notch(wb, "bottom", k * ww, "seam_" + std::to_string(k));
     // Its middle (the CF) faces the front, tangent to the waist; it is rolled into a ring.
-    const double r = waist / (2 * kPi);
+    const double r = waist / (2 * std::numbers::pi);
     wb.placement = placement_about_y(0, {-waist / 2, top_y, r});
     p.pieces.push_back(std::move(wb));
   }

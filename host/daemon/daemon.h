@@ -4,11 +4,13 @@
 #include <atomic>
 #include <chrono>
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include "host/common/error.h"
 #include "host/daemon/control_socket.h"
 #include "host/job/package.h"
+#include "host/job/printer_choice.h"
 
 namespace tp::host {
 
@@ -17,7 +19,7 @@ struct DaemonConfig {
   std::filesystem::path hot_folder;    ///< empty = no hot folder
   std::filesystem::path out_dir;       ///< job outputs: <out_dir>/<job-name>/
   std::filesystem::path socket_path;   ///< default <state_dir>/printd.sock
-  std::string printer_override;        ///< "" = each job's own; "none" = never print
+  std::optional<PrinterChoice> printer_override;  ///< none = each job's own; kNone = never print
   int hot_folder_poll_ms = 500;
   int hot_folder_settle_ms = 2000;     ///< an entry must hold still this long before it is taken
   ClientLimits clients;                ///< control-socket clients: timeout, size, how many at once

@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "host/job/printer_choice.h"
+
 namespace tp::host {
 
 /// Limits of the fit checks on a sewn garment (docs/garments.md, "Fit checks"); a garment
@@ -110,7 +112,7 @@ struct MarkerSpec {
 };
 
 struct PrintSpec {
-  std::string printer = "sim";                        ///< "sim" (printsim) or "usb"
+  PrinterChoice printer = PrinterChoice::kSim;        ///< kSim (printsim) or kUsb; never kNone
   std::optional<std::filesystem::path> printer_model; ///< printer description file; built-in if absent
   int dpi = 600;
   int passes = 1;

@@ -209,7 +209,7 @@ void read_print(FieldReader p, const JobPackage* pkg, PrintSpec& s) {
   p.reject_unknown({"printer", "printer_model", "dpi", "passes", "bidirectional", "screen", "levels", "icc_profile",
                     "ink_limit_pct", "separations_tiff", "preview_dpi", "transfer", "calibration"});
   if (auto v = p.choice("transfer", false, {"direct", "sublimation"})) s.transfer = *v;
-  if (auto v = p.choice("printer", false, {"sim", "usb"})) s.printer = *v;
+  if (auto v = p.choice("printer", false, {"sim", "usb"})) s.printer = parse_printer_choice(*v).value_or(s.printer);
   read_asset(p, "printer_model", false, pkg, s.printer_model);
   if (auto v = p.integer("dpi", false, 25, 2400)) s.dpi = *v;
   if (auto v = p.integer("passes", false, 1, 8)) {

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -27,8 +28,8 @@ std::string_view to_string(StageState state);
 /// How to run a job (where outputs go, which printer, where to resume).
 struct RunOptions {
   std::filesystem::path out_dir;
-  /// Printer to use: "" = the job's own print.printer; "none" = everything but printing.
-  std::string printer_override;
+  /// Printer to use instead of the job's own print.printer (kNone: everything but printing).
+  std::optional<PrinterChoice> printer_override;
   /// Swaths with index <= this were acknowledged by the printer in an earlier attempt.
   std::int64_t resume_after_swath = -1;
   /// The job's plan directory (garment, pieces, marker, swath plan; docs/plan-storage.md). Empty:

@@ -6,15 +6,14 @@ namespace tp::host::internal {
 Status stage_intake(PipelineState& ps) {
   const Job& j = ps.job;
   std::string source = j.garment.pattern ? "pattern" : j.garment.garment_mesh ? "garment_mesh" : "sample";
-  ps.report["intake"] = {
-      {"garment_source", source},
-      {"body", j.garment.body_kind},
-      {"design_layers", j.design.size()},
-      {"fabric_width_mm", j.marker.fabric_width_mm},
-      {"dpi", j.print.dpi},
-      {"passes", j.print.passes},
-      {"printer", ps.options.printer_override.empty() ? j.print.printer : ps.options.printer_override},
-      {"resume_after_swath", ps.options.resume_after_swath}};
+  ps.report["intake"] = {{"garment_source", source},
+                         {"body", j.garment.body_kind},
+                         {"design_layers", j.design.size()},
+                         {"fabric_width_mm", j.marker.fabric_width_mm},
+                         {"dpi", j.print.dpi},
+                         {"passes", j.print.passes},
+                         {"printer", to_string(effective_printer(j.print.printer, ps.options.printer_override))},
+                         {"resume_after_swath", ps.options.resume_after_swath}};
   return {};
 }
 

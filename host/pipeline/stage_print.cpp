@@ -4,13 +4,13 @@
 // session decides where a resumed job goes on from what the printer holds.
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "device/firmware/print_timing.h"
-#include "host/pipeline/printer_model.h"
 #include "host/pipeline/internal/pipeline_state.h"
 #include "host/pipeline/internal/plan_steps.h"
+#include "host/pipeline/printer_model.h"
 #include "host/session/print_session.h"
-#include "host/session/sim_reexec.h"
 #include "rip/job/rip_job.h"
 
 namespace tp::host::internal {
@@ -143,7 +143,7 @@ nlohmann::json ink_json(const rip::RipStats& st, const device::PrinterModel& mod
 }  // namespace
 
 Status stage_print(PipelineState& ps) {
-  const std::string printer = ps.options.printer_override.empty() ? ps.job.print.printer : ps.options.printer_override;
+  const PrinterChoice printer = effective_printer(ps.job.print.printer, ps.options.printer_override);
   auto model = job_printer_model(ps.job);
   if (!model) return fail(model.error());
   rip::RipSettings settings = rip_settings(ps);
@@ -151,14 +151,10 @@ Status stage_print(PipelineState& ps) {
   if (!swath_plan) return fail(swath_plan.error());
   ps.report["estimate"] = print_estimate(ps, *model);
 
-  // Without a printer ("none") the RIP still runs in full; its swaths are counted and dropped.
+  // Without a printer (kNone) the RIP still runs in full; its swaths are counted and dropped.
   std::unique_ptr<PrintSession> session;
   std::uint32_t acked = 0;
-  if (printer != "none") {
-    if (printer == "sim" && !under_printsim())
-      return fail(ErrorCode::kPrinter,
-                  "printer 'sim' is the simulated printer: run the job with `printctl run` (which starts printsim) "
-                  "or under `printsim run -- ...`");
+  if (printer != PrinterChoice::kNone) {
     PrinterConfig cfg;
     cfg.printer = printer;
     auto s = PrintSession::open(cfg);
@@ -181,19 +177,25 @@ Status stage_print(PipelineState& ps) {
       if (auto st = session->queue_cue(c.kind, c.y_um, c.x_um); !st) return st;
   }
 
-  // Swaths go to the printer as the RIP completes them.
+  // Swaths go to the printer as the RIP completes them. A printer that fails the job (a fault such
+  // as a head strike or media jam, an unplug that lasts) stops the RIP; its own error is what the
+  // job reports, so the operator reads a printer fault, not a RIP error.
+  std::optional<Error> printer_error;
   auto sink = [&](device::Swath&& swath) -> rip::Status {
     // Nothing reaches the printer that the job's stored swath plan does not hold.
     if (auto st = swath_plan->check(swath); !st) return rip::fail(rip::ErrorCode::kSwath, st.error().message);
     if (!session) return {};
-    if (auto st = session->send_swath(swath, ps.cancel); !st)
-      return rip::fail(st.error().code == ErrorCode::kCancelled ? rip::ErrorCode::kCancelled : rip::ErrorCode::kSwath,
-                       st.error().message);
+    if (auto st = session->send_swath(swath, ps.cancel); !st) {
+      if (st.error().code == ErrorCode::kCancelled) return rip::fail(rip::ErrorCode::kCancelled, st.error().message);
+      printer_error = st.error();
+      return rip::fail(rip::ErrorCode::kSwath, st.error().message);
+    }
     return {};
   };
   auto stats = rip::rip_marker(ps.roll, *ps.renderer, *model, settings, sink, {}, ps.cancel);
   if (!stats) {
-    if (session) (void)session->abort_job(stats.error().message);
+    if (session) (void)session->abort_job(stats.error().message);  // a no-op once the session ended it
+    if (printer_error) return fail(*printer_error);
     bool cancelled = stats.error().code == rip::ErrorCode::kCancelled || ps.cancel.cancelled();
     return fail(cancelled ? ErrorCode::kCancelled : ErrorCode::kPipeline, stats.error().message);
   }
@@ -202,7 +204,9 @@ Status stage_print(PipelineState& ps) {
   ps.report["ink"] = ink_json(*stats, *model);
   ps.report["measured"] = {{"print_time_s", nullptr}, {"fabric_length_mm", nullptr}, {"swaths", stats->swaths}};
 
-  nlohmann::json print = {{"printer", printer}, {"swaths_total", stats->swaths}, {"swaths_sent", stats->swaths_sent},
+  nlohmann::json print = {{"printer", std::string(to_string(printer))},
+                          {"swaths_total", stats->swaths},
+                          {"swaths_sent", stats->swaths_sent},
                           {"swaths_acked", session ? nlohmann::json(acked) : nlohmann::json(nullptr)}};
   if (session) {
     // Feed the end of the roll past the cutter so the last cut cue fires.

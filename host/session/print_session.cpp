@@ -11,7 +11,6 @@
 #include "device/protocol/recording.h"
 #include "host/session/internal/session_log.h"
 #include "host/session/internal/session_text.h"
-#include "host/session/sim_reexec.h"
 
 namespace tp::host {
 
@@ -30,11 +29,12 @@ PrintSession::~PrintSession() {
 }
 
 Result<std::unique_ptr<PrintSession>> PrintSession::open(const PrinterConfig& config) {
-  if (config.printer != "sim" && config.printer != "usb")
-    return fail(ErrorCode::kInvalidArgument, "printer '" + config.printer + "': expected 'sim' or 'usb'");
-  if (config.printer == "sim" && !under_printsim())
+  if (config.printer == PrinterChoice::kNone)
+    return fail(ErrorCode::kInvalidArgument, "printer 'none': there is no printer to open");
+  if (needs_printsim(config.printer))
     return fail(ErrorCode::kPrinter,
-                "printer 'sim' is the simulator: run under `printsim run -- <command>` (printctl does this itself)");
+                "printer 'sim' is the simulated printer: run the job with `printctl run` (which starts printsim) "
+                "or under `printsim run -- <command>`");
   auto usb = drivers::UsbTransport::open(config.usb, config.open_timeout);
   if (!usb) return fail(ErrorCode::kPrinter, "opening the printer: " + usb.error().message);
   std::unique_ptr<drivers::GpioLines> gpio;

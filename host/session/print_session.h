@@ -23,13 +23,14 @@
 #include "drivers/usb/usb_transport.h"
 #include "geometry/common/cancel.h"
 #include "host/common/error.h"
+#include "host/job/printer_choice.h"
 
 namespace tp::host {
 
 struct PrinterConfig {
-  /// "sim": the printsim printer (the process must run under printsim, see sim_reexec.h);
-  /// "usb": a real printer. Both go through the same USB and GPIO drivers.
-  std::string printer = "sim";
+  /// kSim: the printsim printer (the process must run under printsim, see sim_reexec.h);
+  /// kUsb: a real printer. Both go through the same USB and GPIO drivers; kNone cannot be opened.
+  PrinterChoice printer = PrinterChoice::kSim;
   drivers::UsbOptions usb;
   bool use_gpio = true;  ///< without GPIO, cues are acknowledged without firing a line
   drivers::GpioConfig gpio;
@@ -91,12 +92,12 @@ class PrintSession {
  public:
   /// Opens the printer and the GPIO lines and checks the protocol version (kPrinter errors say
   /// which: not found, busy, incompatible).
-  static Result<std::unique_ptr<PrintSession>> open(const PrinterConfig& config);
+  [[nodiscard]] static Result<std::unique_ptr<PrintSession>> open(const PrinterConfig& config);
   /// A session over an existing transport (tests: device::FirmwareTransport), without GPIO
   /// unless `gpio` is given.
-  static Result<std::unique_ptr<PrintSession>> open_with(std::unique_ptr<device::Transport> transport,
-                                                          const PrinterConfig& config,
-                                                          std::unique_ptr<drivers::GpioLines> gpio = nullptr);
+  [[nodiscard]] static Result<std::unique_ptr<PrintSession>> open_with(
+      std::unique_ptr<device::Transport> transport, const PrinterConfig& config,
+      std::unique_ptr<drivers::GpioLines> gpio = nullptr);
   ~PrintSession();
 
   /// What the printer said it is at the handshake.
@@ -112,7 +113,7 @@ class PrintSession {
   /// received; a job it lost resumes from its last printed swath, with the feed to the right
   /// fabric position; a job it completed is not printed again (end_job() returns its report). A
   /// checkpoint the printer has no record of fails with an operator message (kPrinter).
-  Status begin_job(const JobStart& job);
+  [[nodiscard]] Status begin_job(const JobStart& job);
   /// The first swath index the pipeline must hand in after begin_job() (lower ones are skipped).
   [[nodiscard]] std::uint32_t resume_swath() const { return next_send_; }
   /// True when begin_job() found the job already completed on the printer.
@@ -123,14 +124,14 @@ class PrintSession {
   /// Sends one swath (indices consecutive from 0, or skipped if already acknowledged), blocking
   /// while the printer's buffer is full. Handles cues, pauses, faults, the emergency stop and
   /// reconnects meanwhile. Fails with kCancelled (the job is aborted on the printer) or kPrinter.
-  Status send_swath(const device::Swath& swath, const geometry::CancelToken& cancel);
+  [[nodiscard]] Status send_swath(const device::Swath& swath, const geometry::CancelToken& cancel);
   /// Queues a cutter cue or notch mark at `position_um` of fabric feed since the job began; it
   /// fires when the printer stops there (within one feed step).
-  Status queue_cue(device::CueKind kind, std::int64_t position_um, std::int32_t x_um = 0);
+  [[nodiscard]] Status queue_cue(device::CueKind kind, std::int64_t position_um, std::int32_t x_um = 0);
   /// Ends the job: the printer prints what it holds, feeds `final_feed_um`, and reports.
-  Result<JobResult> end_job(std::uint32_t final_feed_um, const geometry::CancelToken& cancel);
+  [[nodiscard]] Result<JobResult> end_job(std::uint32_t final_feed_um, const geometry::CancelToken& cancel);
   /// Aborts the job on the printer (buffered swaths are discarded).
-  Status abort_job(const std::string& reason);
+  [[nodiscard]] Status abort_job(const std::string& reason);
 
   [[nodiscard]] const SessionStats& stats() const { return stats_; }
   [[nodiscard]] const device::StatusMsg* printer_status() const { return link_->status(); }
@@ -139,22 +140,22 @@ class PrintSession {
  private:
   PrintSession(PrinterConfig config, std::unique_ptr<device::Transport> transport,
                std::unique_ptr<drivers::GpioLines> gpio);
-  Status connect();
-  Status service(std::chrono::milliseconds wait, const geometry::CancelToken* cancel);
-  Status recover(const device::Error& cause);
+  [[nodiscard]] Status connect();
+  [[nodiscard]] Status service(std::chrono::milliseconds wait, const geometry::CancelToken* cancel);
+  [[nodiscard]] Status recover(const device::Error& cause);
   // print_session_resume.cpp: asking the printer what it holds and resuming from it.
-  Status attach_or_open(const device::StatusMsg& st);
-  Status open_on_printer(std::uint32_t first_swath, std::int64_t fabric_pos_um);
-  Status resume_lost_job(const device::StatusMsg& st, bool& disconnected);
-  Status resend_after_reconnect(const device::StatusMsg& st, bool& again);
-  device::Status send_wire_swath(const device::Swath& swath);
+  [[nodiscard]] Status attach_or_open(const device::StatusMsg& st);
+  [[nodiscard]] Status open_on_printer(std::uint32_t first_swath, std::int64_t fabric_pos_um);
+  [[nodiscard]] Status resume_lost_job(const device::StatusMsg& st, bool& disconnected);
+  [[nodiscard]] Status resend_after_reconnect(const device::StatusMsg& st, bool& again);
+  [[nodiscard]] device::Status send_wire_swath(const device::Swath& swath);
   void note_printed(const device::StatusMsg& st);
-  Status absorb_status();
-  Status fire_cue(std::uint32_t id, const geometry::CancelToken* cancel);
-  Status check_emergency_stop();
-  Status send_cues_up_to(std::int64_t position_um);
-  Status transmit(const device::Swath& swath);
-  Status fail_job(ErrorCode code, const std::string& message);
+  [[nodiscard]] Status absorb_status();
+  [[nodiscard]] Status fire_cue(std::uint32_t id, const geometry::CancelToken* cancel);
+  [[nodiscard]] Status check_emergency_stop();
+  [[nodiscard]] Status send_cues_up_to(std::int64_t position_um);
+  [[nodiscard]] Status transmit(const device::Swath& swath);
+  [[nodiscard]] Status fail_job(ErrorCode code, const std::string& message);
   std::string job_where() const;
 
   PrinterConfig config_;

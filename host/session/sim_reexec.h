@@ -29,11 +29,11 @@ struct SimReexec {
 
 /// Replaces this process with printsim running it (returns only on failure: kPrinter naming the
 /// missing printsim or the exec error). Under printsim it does nothing and succeeds.
-Status reexec_under_printsim(int argc, char** argv, const SimReexec& options);
+[[nodiscard]] Status reexec_under_printsim(int argc, char** argv, const SimReexec& options);
 
 /// Same, with this process's own arguments (read from /proc/self/cmdline), for command handlers
 /// that never see argv.
-Status reexec_under_printsim(const SimReexec& options);
+[[nodiscard]] Status reexec_under_printsim(const SimReexec& options);
 
 /// The printsim command line reexec_under_printsim() would run (for logs and tests).
 std::vector<std::string> printsim_command(int argc, char** argv, const SimReexec& options);

@@ -30,7 +30,7 @@ struct SyntheticRunResult {
 };
 
 /// Opens the job, queues its cues, hands in its swaths and ends it. Errors are the session's.
-Result<SyntheticRunResult> run_synthetic_job(PrintSession& session, const SyntheticRunOptions& options,
-                                             const geometry::CancelToken& cancel);
+[[nodiscard]] Result<SyntheticRunResult> run_synthetic_job(PrintSession& session, const SyntheticRunOptions& options,
+                                                           const geometry::CancelToken& cancel);
 
 }  // namespace tp::host

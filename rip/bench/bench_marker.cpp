@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <numbers>
 
 #include <spdlog/fmt/fmt.h>
 
@@ -22,7 +23,6 @@ namespace tp::rip {
 namespace {
 constexpr double kPieceWidthMm = 400, kPieceLengthMm = 500;
 constexpr double kDesignDpi = 150;
-constexpr double kPi = 3.14159265358979323846;
 }  // namespace
 
 geometry::ImageHandle bench_design_texture(int size_px) {
@@ -31,7 +31,7 @@ geometry::ImageHandle bench_design_texture(int size_px) {
   img->source = "bench design";
   img->pixels.resize(static_cast<size_t>(size_px) * size_px);
   // Sums of sines with whole periods across the tile, so it repeats without a seam.
-  const double k = 2 * kPi / size_px;
+  const double k = 2 * std::numbers::pi / size_px;
   for (int y = 0; y < size_px; ++y)
     for (int x = 0; x < size_px; ++x) {
       const double a = std::sin(3 * k * x + 2 * std::sin(2 * k * y)), b = std::cos(5 * k * y + std::sin(4 * k * x));

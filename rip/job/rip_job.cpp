@@ -7,6 +7,8 @@
 
 #include <spdlog/fmt/fmt.h>
 
+#include "device/swath/packbits.h"
+
 #include "rip/common/internal/log.h"
 #include "rip/common/internal/thread_pool.h"
 #include "rip/job/internal/band_stage.h"
@@ -14,7 +16,6 @@
 #include "rip/job/internal/separation_output.h"
 #include "rip/job/internal/swath_assembler.h"
 #include "rip/render/marker_source.h"
-#include "rip/swath/packbits.h"
 
 namespace tp::rip {
 
@@ -193,9 +194,10 @@ Result<std::vector<std::uint8_t>> decode_swath_data(const device::Swath& swath) 
                                                    h.raw_bytes));
       return swath.data;
     case device::SwathCompression::kPackBits: {
-      auto d = packbits_decode(swath.data, h.raw_bytes);
-      if (!d) return std::unexpected(d.error().with_context("swath " + std::to_string(h.index)));
-      return d;
+      std::vector<std::uint8_t> raw;
+      if (auto d = device::packbits_decode(swath.data, h.raw_bytes, raw); !d)
+        return fail(ErrorCode::kSwath, fmt::format("swath {}: {}", h.index, d.error().message));
+      return raw;
     }
   }
   return fail(ErrorCode::kSwath, fmt::format("swath {}: unknown compression", h.index));

@@ -5,9 +5,9 @@
 #include <chrono>
 #include <cstring>
 
+#include "device/swath/packbits.h"
 #include "rip/common/internal/cpu_clock.h"
 #include "rip/common/memory.h"
-#include "rip/swath/packbits.h"
 
 namespace tp::rip {
 
@@ -54,7 +54,8 @@ void SwathAssembler::build_channel(const PassRows& pr, int first_byte, int row_b
   // The buffer keeps its size between swaths (no re-zeroing); the used length is tracked apart.
   std::vector<std::uint8_t>& out = channel_out_[static_cast<size_t>(channel)];
   const bool packbits = settings_.compression == device::SwathCompression::kPackBits;
-  const size_t worst = static_cast<size_t>(pr.rows) * (packbits ? packbits_max_size(static_cast<size_t>(row_bytes)) : row_bytes);
+  const size_t worst =
+      static_cast<size_t>(pr.rows) * (packbits ? device::packbits_max_size(static_cast<size_t>(row_bytes)) : row_bytes);
   if (out.size() < worst) out.resize(worst);
   size_t used = 0;
   std::uint8_t* tmp = scratch_[static_cast<size_t>(worker)].data();
@@ -69,7 +70,7 @@ void SwathAssembler::build_channel(const PassRows& pr, int first_byte, int row_b
       src = tmp;
     }
     if (packbits) {
-      used += packbits_encode({src, static_cast<size_t>(row_bytes)}, out.data() + used);
+      used += device::packbits_encode({src, static_cast<size_t>(row_bytes)}, out.data() + used);
     } else {
       std::memcpy(out.data() + used, src, static_cast<size_t>(row_bytes));
       used += static_cast<size_t>(row_bytes);

@@ -50,7 +50,8 @@ struct FabricSummary {
 class FabricCanvas {
  public:
   /// `scratch` is a file for finished rows (created, removed when the canvas goes).
-  static Result<std::unique_ptr<FabricCanvas>> create(FabricSpec spec, const std::filesystem::path& scratch);
+  [[nodiscard]] static Result<std::unique_ptr<FabricCanvas>> create(FabricSpec spec,
+                                                                    const std::filesystem::path& scratch);
   ~FabricCanvas();
   FabricCanvas(const FabricCanvas&) = delete;
   FabricCanvas& operator=(const FabricCanvas&) = delete;
@@ -61,8 +62,8 @@ class FabricCanvas {
   /// Writes `tif` (all inks, levels summed per pixel), `png` (sRGB) and the CIELAB file beside it
   /// (both downscaled by an integer factor so they are at most `preview_max_width` wide). Fails
   /// with kOutput naming the file.
-  Result<FabricSummary> finish(const std::filesystem::path& tif, const std::filesystem::path& png,
-                               std::uint32_t preview_max_width = 4096);
+  [[nodiscard]] Result<FabricSummary> finish(const std::filesystem::path& tif, const std::filesystem::path& png,
+                                             std::uint32_t preview_max_width = 4096);
 
  private:
   FabricCanvas(FabricSpec spec, FabricColourModel colour, std::FILE* scratch, std::filesystem::path scratch_path);

@@ -35,7 +35,7 @@ class GpioChip {
   GpioChip& operator=(const GpioChip&) = delete;
 
   /// Adds /dev/gpiochip<index> and its sysfs entries to the testbed and starts answering.
-  Status plug();
+  [[nodiscard]] Status plug();
   /// Sets an input line's physical level (the cutting table's side). False if no such line.
   bool drive_input(const std::string& name, bool level);
   /// Physical level of a line (outputs as last driven).

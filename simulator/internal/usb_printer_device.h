@@ -46,7 +46,7 @@ class UsbPrinterDevice {
   UsbPrinterDevice& operator=(const UsbPrinterDevice&) = delete;
 
   /// Adds the device to the testbed and starts answering its ioctls.
-  Status plug();
+  [[nodiscard]] Status plug();
   /// Plays a pulled cable: pending URBs complete with -ESHUTDOWN, every later call fails with
   /// ENODEV, the device leaves sysfs. The client's open fd stays valid (its ioctls just fail).
   void unplug();

@@ -17,18 +17,19 @@ namespace tp::sim {
 class FabricJournal {
  public:
   /// Starts a journal for job `job_id` at `path` (replacing an older one).
-  static Result<FabricJournal> create(const std::filesystem::path& path, std::uint64_t job_id);
+  [[nodiscard]] static Result<FabricJournal> create(const std::filesystem::path& path, std::uint64_t job_id);
   /// Opens the journal at `path` to append to it, after calling `laid` for each swath recorded
   /// with an index below `before_swath` (records from there on are dropped: not on the fabric).
   /// Fails with kInvalidArgument if the file is missing, damaged or of another job.
-  static Result<FabricJournal> reopen(const std::filesystem::path& path, std::uint64_t job_id, std::uint32_t before_swath,
-                                      const std::function<void(const device::SwathHeader&, std::span<const std::uint8_t>)>& laid);
+  [[nodiscard]] static Result<FabricJournal> reopen(
+      const std::filesystem::path& path, std::uint64_t job_id, std::uint32_t before_swath,
+      const std::function<void(const device::SwathHeader&, std::span<const std::uint8_t>)>& laid);
   FabricJournal(FabricJournal&& other) noexcept;
   FabricJournal& operator=(FabricJournal&& other) noexcept;
   ~FabricJournal();
 
   /// Appends a printed swath (raw data as laid). Fails with kOutput naming the file.
-  Status append(const device::SwathHeader& header, std::span<const std::uint8_t> raw);
+  [[nodiscard]] Status append(const device::SwathHeader& header, std::span<const std::uint8_t> raw);
   /// Closes and deletes the file (the job ended: its fabric is written out).
   void discard();
 

@@ -12,8 +12,8 @@ namespace tp::sim {
 
 /// Reads the memory file; a missing file is an empty memory. Fails with kInvalidArgument naming
 /// the file and field if it is not one printsim wrote.
-Result<device::NonVolatileState> load_printer_memory(const std::filesystem::path& path);
+[[nodiscard]] Result<device::NonVolatileState> load_printer_memory(const std::filesystem::path& path);
 /// Writes the memory file (to a temporary name, then renamed). Fails with kOutput naming the file.
-Status save_printer_memory(const std::filesystem::path& path, const device::NonVolatileState& state);
+[[nodiscard]] Status save_printer_memory(const std::filesystem::path& path, const device::NonVolatileState& state);
 
 }  // namespace tp::sim

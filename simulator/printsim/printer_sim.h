@@ -33,6 +33,6 @@ inline constexpr const char* kPrintsimEnv = "TP_PRINTSIM";
 /// Runs `options.command` against the simulated printer and cutter and returns its exit status
 /// (128 + signal if it was killed). Fails with kTestbed, kScenario or kChild before the command
 /// runs, or kOutput if the job outputs could not be written.
-Result<int> run_printsim(const SimOptions& options);
+[[nodiscard]] Result<int> run_printsim(const SimOptions& options);
 
 }  // namespace tp::sim

@@ -50,8 +50,8 @@ struct Scenario {
 
 /// Parses scenario JSON. Errors name the source and the JSON pointer of the bad field
 /// ("jam.json: /faults/1/type: unknown fault 'jammed'").
-Result<Scenario> parse_scenario(std::string_view text, std::string_view source);
+[[nodiscard]] Result<Scenario> parse_scenario(std::string_view text, std::string_view source);
 /// Reads and parses a scenario file.
-Result<Scenario> load_scenario(const std::filesystem::path& path);
+[[nodiscard]] Result<Scenario> load_scenario(const std::filesystem::path& path);
 
 }  // namespace tp::sim

@@ -4,11 +4,11 @@
 
 #include <random>
 
+#include "device/swath/packbits.h"
 #include "rip/bench/bench_marker.h"
 #include "rip/colour/ink_converter.h"
 #include "rip/render/marker_source.h"
 #include "rip/screen/screen.h"
-#include "rip/swath/packbits.h"
 
 namespace tp::rip {
 namespace {
@@ -63,10 +63,10 @@ void BM_PackBitsScreenedRow(benchmark::State& state) {
   std::vector<std::uint8_t> contone(static_cast<size_t>(padded_width(kRowPx)), 0), packed(static_cast<size_t>(packed_row_bytes(setup)));
   for (int x = 0; x < kRowPx; ++x) contone[static_cast<size_t>(x)] = static_cast<std::uint8_t>(state.range(0));
   (*screen)->screen_row(0, 0, contone.data(), packed.data());
-  std::vector<std::uint8_t> out(packbits_max_size(packed.size()));
+  std::vector<std::uint8_t> out(device::packbits_max_size(packed.size()));
   size_t n = 0;
   for (auto _ : state) {
-    n = packbits_encode(packed, out.data());
+    n = device::packbits_encode(packed, out.data());
     benchmark::DoNotOptimize(out.data());
   }
   state.SetBytesProcessed(state.iterations() * static_cast<std::int64_t>(packed.size()));
@@ -111,8 +111,8 @@ BENCHMARK(BM_RenderPanelTile)->Unit(benchmark::kMillisecond);
 
 /// ctest's smoke run: cheap, checks the executable links and runs.
 void BM_Smoke(benchmark::State& state) {
-  std::vector<std::uint8_t> row(4096, 0), out(packbits_max_size(4096));
-  for (auto _ : state) benchmark::DoNotOptimize(packbits_encode(row, out.data()));
+  std::vector<std::uint8_t> row(4096, 0), out(device::packbits_max_size(4096));
+  for (auto _ : state) benchmark::DoNotOptimize(device::packbits_encode(row, out.data()));
 }
 BENCHMARK(BM_Smoke);
 

@@ -62,14 +62,14 @@ struct UsbTransport::Impl {
   UsbStats stats;
 
   // usb_transport.cpp: finding, opening and closing.
-  Status find_and_open();
+  [[nodiscard]] Status find_and_open();
   void start();
   void teardown();
   // usb_transfers.cpp: bulk streaming.
-  device::Status write(std::span<const std::uint8_t> bytes);
-  device::Result<std::size_t> read(std::span<std::uint8_t> buffer, std::chrono::milliseconds timeout);
-  device::Status drain(std::chrono::milliseconds timeout);
-  device::Status recover_out(std::unique_lock<std::mutex>& lock);
+  [[nodiscard]] device::Status write(std::span<const std::uint8_t> bytes);
+  [[nodiscard]] device::Result<std::size_t> read(std::span<std::uint8_t> buffer, std::chrono::milliseconds timeout);
+  [[nodiscard]] device::Status drain(std::chrono::milliseconds timeout);
+  [[nodiscard]] device::Status recover_out(std::unique_lock<std::mutex>& lock);
   void recover_in(std::unique_lock<std::mutex>& lock);
   void submit_in(InSlot& slot);
 };

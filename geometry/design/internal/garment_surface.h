@@ -41,7 +41,7 @@ class GarmentSurface {
  public:
   /// Checks the garment against the pattern (piece count, indices, seam loops) and derives
   /// normals and seam partners. Fails naming the piece and field at fault.
-  static Result<std::unique_ptr<GarmentSurface>> build(const Pattern& pattern, const Garment& garment);
+  [[nodiscard]] static Result<std::unique_ptr<GarmentSurface>> build(const Pattern& pattern, const Garment& garment);
 
   const Garment& garment() const { return garment_; }
   int piece_count() const { return static_cast<int>(charts_.size()); }

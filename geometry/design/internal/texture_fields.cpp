@@ -8,8 +8,6 @@
 namespace tp::geometry::internal {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
-
 double smoothstep(double x) {
   x = std::clamp(x, 0.0, 1.0);
   return x * x * (3 - 2 * x);
@@ -27,7 +25,7 @@ class CylindricalField : public TextureField {
     if (norm(front) < 1e-6) front = Vec3{1, 0, 0} - axis_ * dot(Vec3{1, 0, 0}, axis_);
     e0_ = normalized(front);
     e1_ = cross(axis_, e0_);
-    const double circumference = 2 * kPi * std::max(cyl_.radius_mm, 1e-6);
+    const double circumference = 2 * std::numbers::pi * std::max(cyl_.radius_mm, 1e-6);
     const int tiles = layer.tile_width_mm > 0
                           ? std::max(1, static_cast<int>(std::lround(circumference / layer.tile_width_mm)))
                           : 1;
@@ -36,7 +34,7 @@ class CylindricalField : public TextureField {
     H_ = layer.image->height_px;
     tile_h_mm_ = layer.tile_height_mm > 0 ? layer.tile_height_mm : tile_w_mm_ * H_ / W_;
     period_ = static_cast<double>(tiles) * W_;
-    rotation_rad_ = layer.rotation_deg * kPi / 180.0;
+    rotation_rad_ = layer.rotation_deg * std::numbers::pi / 180.0;
     offset_ = layer.offset_mm;
     top_ = cyl_.max_height_mm;
     image = std::make_shared<MipImage>(*layer.image, Wrap::kRepeat, layer.repeat ? Wrap::kRepeat : Wrap::kTransparent);
@@ -122,8 +120,8 @@ PlanarField::PlanarField(const PlanarProjection& layer, double tolerance_mm) {
   const int W = layer.image->width_px, H = layer.image->height_px;
   width_mm_ = layer.width_mm;
   height_mm_ = layer.height_mm > 0 ? layer.height_mm : layer.width_mm * H / W;
-  cos_full_ = std::cos(layer.fade_start_deg * kPi / 180.0);
-  cos_zero_ = std::cos(layer.fade_end_deg * kPi / 180.0);
+  cos_full_ = std::cos(layer.fade_start_deg * std::numbers::pi / 180.0);
+  cos_zero_ = std::cos(layer.fade_end_deg * std::numbers::pi / 180.0);
   const Wrap wrap = layer.repeat ? Wrap::kRepeat : Wrap::kTransparent;
   image = std::make_shared<MipImage>(*layer.image, wrap, wrap);
   tolerance_texels = tolerance_mm / (width_mm_ / W);

@@ -3,6 +3,7 @@
 #include "geometry/nesting/internal/overlap.h"
 
 #include <cmath>
+#include <numbers>
 
 #if defined(__SSE2__)
 #include <immintrin.h>
@@ -29,8 +30,6 @@ inline bool edge_touches_box(Vec2 a, Vec2 b, const Box2& box) {
   return lo(a.x, b.x) <= box.max.x && hi(a.x, b.x) >= box.min.x && lo(a.y, b.y) <= box.max.y &&
          hi(a.y, b.y) >= box.min.y;
 }
-
-constexpr double kPi = 3.14159265358979323846;
 
 // Padding lanes sit this far away with radius 0, so they add exactly 0.
 constexpr float kFarAway = 1e15f;
@@ -117,7 +116,8 @@ double overlap_proxy(const PoleSoA& a, const std::vector<Circle>& b, Vec2 shift_
     // The largest poles come first: checking the bound after each one rejects bad samples early.
     alignas(16) float lanes[4];
     _mm_store_ps(lanes, sum);
-    const double partial = kPi * ((static_cast<double>(lanes[0]) + lanes[1]) + (static_cast<double>(lanes[2]) + lanes[3]));
+    const double partial =
+        std::numbers::pi * ((static_cast<double>(lanes[0]) + lanes[1]) + (static_cast<double>(lanes[2]) + lanes[3]));
     if (partial > limit) return partial;
   }
   alignas(16) float lanes[4];
@@ -134,12 +134,13 @@ double overlap_proxy(const PoleSoA& a, const std::vector<Circle>& b, Vec2 shift_
       const float depth = pd >= e ? pd : e2 / (2 * e - pd);
       lanes[i % 4] += depth * (qr < a.r[i] ? qr : a.r[i]);
     }
-    const double partial = kPi * ((static_cast<double>(lanes[0]) + lanes[1]) + (static_cast<double>(lanes[2]) + lanes[3]));
+    const double partial =
+        std::numbers::pi * ((static_cast<double>(lanes[0]) + lanes[1]) + (static_cast<double>(lanes[2]) + lanes[3]));
     if (partial > limit) return partial;
   }
   const double total = (static_cast<double>(lanes[0]) + lanes[1]) + (static_cast<double>(lanes[2]) + lanes[3]);
 #endif
-  return kPi * total;
+  return std::numbers::pi * total;
 }
 
 }  // namespace tp::geometry::nesting

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <numbers>
 
 #include "geometry/common/aama_layers.h"
 #include "geometry/pattern/curve.h"
@@ -20,7 +21,6 @@
 namespace tp::geometry::internal {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 /// Curve ends closer than this (mm) are joined when chaining lines into an outline.
 constexpr double kChainTolerance_mm = 0.05;
 /// A turn point marks the outline vertex within this distance (mm).
@@ -153,9 +153,10 @@ Layers sort_layers(const DxfBlock& block, double unit) {
       if (!p.pts.empty()) L.curves[layer].push_back(std::move(p));
     } else if (e.type == "ARC") {
       // Counter-clockwise from angle 50 to angle 51 (degrees) around 10/20 with radius 40.
-      double r = e.number(40) * unit, a0 = e.number(50) * kPi / 180, a1 = e.number(51) * kPi / 180;
-      double sweep = std::fmod(a1 - a0, 2 * kPi);
-      if (sweep <= 0) sweep += 2 * kPi;
+      double r = e.number(40) * unit, a0 = e.number(50) * std::numbers::pi / 180,
+             a1 = e.number(51) * std::numbers::pi / 180;
+      double sweep = std::fmod(a1 - a0, 2 * std::numbers::pi);
+      if (sweep <= 0) sweep += 2 * std::numbers::pi;
       if (!(r > 0) || !std::isfinite(sweep)) continue;
       Polyline p;
       p.pts = {p10 + Vec2{std::cos(a0), std::sin(a0)} * r, p10 + Vec2{std::cos(a1), std::sin(a1)} * r};

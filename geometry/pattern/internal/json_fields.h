@@ -26,21 +26,21 @@ struct JsonPath {
 const nlohmann::json* member(const nlohmann::json& obj, std::string_view key);
 
 /// A finite number.
-Result<double> get_number(const nlohmann::json& v, const JsonPath& at);
+[[nodiscard]] Result<double> get_number(const nlohmann::json& v, const JsonPath& at);
 /// An integer within [lo, hi].
-Result<long long> get_integer(const nlohmann::json& v, const JsonPath& at, long long lo, long long hi);
+[[nodiscard]] Result<long long> get_integer(const nlohmann::json& v, const JsonPath& at, long long lo, long long hi);
 /// A string.
-Result<std::string> get_string(const nlohmann::json& v, const JsonPath& at);
+[[nodiscard]] Result<std::string> get_string(const nlohmann::json& v, const JsonPath& at);
 /// A boolean (true/false, or 0/1).
-Result<bool> get_bool(const nlohmann::json& v, const JsonPath& at);
+[[nodiscard]] Result<bool> get_bool(const nlohmann::json& v, const JsonPath& at);
 /// [x, y] of finite numbers, each multiplied by `scale`.
-Result<Vec2> get_point(const nlohmann::json& v, const JsonPath& at, double scale = 1);
+[[nodiscard]] Result<Vec2> get_point(const nlohmann::json& v, const JsonPath& at, double scale = 1);
 /// An array (possibly empty).
-Status expect_array(const nlohmann::json& v, const JsonPath& at);
+[[nodiscard]] Status expect_array(const nlohmann::json& v, const JsonPath& at);
 /// An object.
-Status expect_object(const nlohmann::json& v, const JsonPath& at);
+[[nodiscard]] Status expect_object(const nlohmann::json& v, const JsonPath& at);
 
 /// Parses `text`; a syntax error names the file, line and column.
-Result<nlohmann::json> parse_json(std::string_view text, const std::string& file);
+[[nodiscard]] Result<nlohmann::json> parse_json(std::string_view text, const std::string& file);
 
 }  // namespace tp::geometry::internal

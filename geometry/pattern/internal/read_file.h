@@ -13,6 +13,7 @@ namespace tp::geometry::internal {
 inline constexpr std::uintmax_t kMaxPatternFileBytes = 512ull << 20;
 
 /// The file's bytes; kIo naming the path when it is missing, unreadable or too large.
-Result<std::string> read_file(const std::filesystem::path& path, std::uintmax_t max_bytes = kMaxPatternFileBytes);
+[[nodiscard]] Result<std::string> read_file(const std::filesystem::path& path,
+                                            std::uintmax_t max_bytes = kMaxPatternFileBytes);
 
 }  // namespace tp::geometry::internal

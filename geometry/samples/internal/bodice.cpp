@@ -3,13 +3,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "geometry/samples/internal/draft.h"
 
 namespace tp::geometry::samples::internal {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 // The garment's underarm sits this far below the body's armpit.
 constexpr double kUnderarmDropMm = 25;
 // Dart points stop short of the bust point by this much.
@@ -102,9 +102,9 @@ Piece make_piece(const std::string& name, const std::string& role, const std::ve
 
 BodiceBlock bodice_block(const BodyMeasurements& m, const BodiceOptions& o) {
   BodiceBlock b;
-  const double nr = m.neck_mm / (2 * kPi), nw = nr + 12;
+  const double nr = m.neck_mm / (2 * std::numbers::pi), nw = nr + 12;
   const double bl = m.back_length_mm, hps_y = bl + 18;
-  const double slope = m.shoulder_slope_deg * kPi / 180, slope_f = slope + 2 * kPi / 180;
+  const double slope = m.shoulder_slope_deg * std::numbers::pi / 180, slope_f = slope + 2 * std::numbers::pi / 180;
   const double tip_x = m.shoulder_width_mm / 2 + 5;
   const double shoulder_len = (tip_x - nw) / std::cos(slope);
   const double quarter = (m.bust_mm + o.bust_ease_mm) / 4;

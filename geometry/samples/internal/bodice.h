@@ -63,8 +63,9 @@ Piece draft_sleeve(const BodyMeasurements& m, double back_armhole_mm, double fro
 /// Sews chain A (edges of possibly several pieces, running from point P to point Q) to chain B
 /// (running from Q back to P), splitting stitches wherever either chain changes edge. Fails with
 /// kInvalidPattern when the chains' lengths differ by more than 0.1 %, naming both lengths.
-Status sew_chains(Pattern& p, const std::vector<std::pair<std::string, std::string>>& chain_a,
-                  const std::vector<std::pair<std::string, std::string>>& chain_b, const std::string& seam_name);
+[[nodiscard]] Status sew_chains(Pattern& p, const std::vector<std::pair<std::string, std::string>>& chain_a,
+                                const std::vector<std::pair<std::string, std::string>>& chain_b,
+                                const std::string& seam_name);
 
 /// Placements of the draft frame around the dress form: the front half's plane at +r, the
 /// back's (turned round) at -r, waist at `waist_y_mm`.

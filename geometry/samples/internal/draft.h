@@ -50,11 +50,12 @@ Placement3d placement_about_y(double theta_rad, Vec3 t_mm);
 
 /// Adds a stitch between whole or partial edges named by piece and edge names. Spans are
 /// [from, to] mm (to < 0: the edge's end). Fails with kUnknownReference naming the missing name.
-Status add_stitch(Pattern& p, const std::string& piece_a, const std::string& edge_a, const std::string& piece_b,
-                  const std::string& edge_b, double a_from = 0, double a_to = -1, double b_from = 0, double b_to = -1);
+[[nodiscard]] Status add_stitch(Pattern& p, const std::string& piece_a, const std::string& edge_a,
+                                const std::string& piece_b, const std::string& edge_b, double a_from = 0,
+                                double a_to = -1, double b_from = 0, double b_to = -1);
 
 /// Adds the stitch sewing the two legs of every dart of every piece.
-Status stitch_darts(Pattern& p);
+[[nodiscard]] Status stitch_darts(Pattern& p);
 
 /// Total arc length of the named edge of the named piece (0 if missing).
 double edge_length(const Pattern& p, const std::string& piece, const std::string& edge);

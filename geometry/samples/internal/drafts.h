@@ -8,12 +8,12 @@
 namespace tp::geometry::samples::internal {
 
 /// Eight-gore skirt with waistband (9 pieces), knee length, CF and CB seams.
-Result<Pattern> draft_skirt8(const BodyMeasurements& m);
+[[nodiscard]] Result<Pattern> draft_skirt8(const BodyMeasurements& m);
 /// Simple waist-length top with bust, shoulder and waist darts (4 pieces).
-Result<Pattern> draft_simple_top(const BodyMeasurements& m);
+[[nodiscard]] Result<Pattern> draft_simple_top(const BodyMeasurements& m);
 /// Blouse with princess seams and set-in sleeves (9 pieces).
-Result<Pattern> draft_blouse(const BodyMeasurements& m);
+[[nodiscard]] Result<Pattern> draft_blouse(const BodyMeasurements& m);
 /// Knee-length princess dress with short sleeves (10 pieces).
-Result<Pattern> draft_dress(const BodyMeasurements& m);
+[[nodiscard]] Result<Pattern> draft_dress(const BodyMeasurements& m);
 
 }  // namespace tp::geometry::samples::internal

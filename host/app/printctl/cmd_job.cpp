@@ -88,7 +88,7 @@ void register_job_commands(CLI::App& app) {
   run->add_option("job", run_path, "Job folder or .zip")->required();
   run->add_option("--out", run_out, "Output folder (report.json, marker.png, pieces, fabric.png)")->required();
   run->add_option("--printer", run_printer, "Override the job's printer: sim, usb or none")
-      ->check(CLI::IsMember({"sim", "usb", "none"}));
+      ->check(CLI::IsMember(printer_choice_names()));
   run->add_option("--resume-after-swath", resume_after, "Swaths up to this index were already printed");
   add_limit_option(run);
   run->add_option("--plan-dir", run_plan,
@@ -103,8 +103,9 @@ void register_job_commands(CLI::App& app) {
     if (!job) die(job.error(), 1);
     // The simulated printer is printsim: run this very command again under it, so the job goes
     // through the real USB and GPIO drivers to the emulated devices.
-    const std::string printer = run_printer.empty() ? job->print.printer : run_printer;
-    if (printer == "sim" && !under_printsim()) {
+    const std::optional<PrinterChoice> printer_override =
+        run_printer.empty() ? std::nullopt : parse_printer_choice(run_printer);
+    if (needs_printsim(effective_printer(job->print.printer, printer_override))) {
       // printsim emulates the printer the job is planned for, in the job's print mode.
       auto model = job_printer_model(*job);
       if (!model) die(model.error(), 1);
@@ -119,7 +120,7 @@ void register_job_commands(CLI::App& app) {
     }
     RunOptions opt;
     opt.out_dir = out;
-    opt.printer_override = run_printer;
+    opt.printer_override = printer_override;
     opt.resume_after_swath = resume_after;
     if (!run_plan.empty()) opt.plan_dir = fs::absolute(run_plan);
     // Printers report "no job" as id 0, so a command-line run takes a non-zero id of its own.

@@ -25,8 +25,10 @@ int main(int argc, char** argv) {
   app.add_option("--hot-folder", hot, "Folder to watch for dropped jobs (folders with job.json, or .zip)");
   app.add_option("--out", out, "Job outputs go to <out>/<job-name>/")->capture_default_str();
   app.add_option("--socket", socket, "Control socket (default <state-dir>/printd.sock)");
-  app.add_option("--printer", cfg.printer_override, "Override each job's printer: sim, usb or none")
-      ->check(CLI::IsMember({"sim", "usb", "none"}));
+  std::string printer;
+  app.add_option("--printer", printer, "Override each job's printer: sim, usb or none")
+      ->check(CLI::IsMember(tp::host::printer_choice_names()))
+      ->each([&](const std::string& name) { cfg.printer_override = tp::host::parse_printer_choice(name); });
   app.add_option("--poll-ms", cfg.hot_folder_poll_ms, "Hot folder scan interval")->capture_default_str();
   app.add_option("--hot-settle-ms", cfg.hot_folder_settle_ms,
                  "A hot-folder entry is taken once its size held still this long and no file of it is open "

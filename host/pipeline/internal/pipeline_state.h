@@ -55,13 +55,13 @@ struct PipelineState {
 };
 
 // One function per stage (stage_<name>.cpp), each filling PipelineState and the report.
-Status stage_intake(PipelineState& ps);
-Status stage_pattern(PipelineState& ps);
-Status stage_mesh(PipelineState& ps);
-Status stage_garment(PipelineState& ps);
-Status stage_design(PipelineState& ps);
-Status stage_marker(PipelineState& ps);
-Status stage_print(PipelineState& ps);
-Status stage_outputs(PipelineState& ps);
+[[nodiscard]] Status stage_intake(PipelineState& ps);
+[[nodiscard]] Status stage_pattern(PipelineState& ps);
+[[nodiscard]] Status stage_mesh(PipelineState& ps);
+[[nodiscard]] Status stage_garment(PipelineState& ps);
+[[nodiscard]] Status stage_design(PipelineState& ps);
+[[nodiscard]] Status stage_marker(PipelineState& ps);
+[[nodiscard]] Status stage_print(PipelineState& ps);
+[[nodiscard]] Status stage_outputs(PipelineState& ps);
 
 }  // namespace tp::host::internal

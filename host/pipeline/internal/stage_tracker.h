@@ -21,7 +21,7 @@ class StageTracker {
   /// Runs `body` (returning Status) as stage `s`; a cancelled token fails the stage as cancelled.
   /// A stage that succeeds with `*reused` set is recorded as reused (loaded from the plan).
   template <class Body>
-  Status run(Stage s, Body&& body, const bool* reused = nullptr) {
+  [[nodiscard]] Status run(Stage s, Body&& body, const bool* reused = nullptr) {
     if (cancel_.cancelled()) return finish(s, StageState::kCancelled, 0, fail(ErrorCode::kCancelled, "job cancelled"));
     set(s, StageState::kRunning, 0);
     auto t0 = std::chrono::steady_clock::now();
@@ -39,7 +39,7 @@ class StageTracker {
   void skip(Stage s) { set(s, StageState::kSkipped, 0); }
 
  private:
-  Status finish(Stage s, StageState state, double secs, Status st) {
+  [[nodiscard]] Status finish(Stage s, StageState state, double secs, Status st) {
     set(s, state, secs);
     return st;
   }

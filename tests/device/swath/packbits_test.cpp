@@ -1,5 +1,5 @@
-// tests/device/swath/packbits_test.cpp: PackBits as the firmware decodes it: golden bytes,
-// round trips over awkward runs, and refusal of broken streams.
+// tests/device/swath/packbits_test.cpp: the one PackBits codec (RIP, firmware, simulator): golden
+// bytes, round trips within the worst-case size, and refusal of broken streams.
 #include "device/swath/packbits.h"
 
 #include <gtest/gtest.h>
@@ -35,7 +35,7 @@ TEST(PackBits, RoundTripsRandomAndRunHeavyData) {
       raw[i] = (trial % 3 == 0) ? static_cast<std::uint8_t>(rng()) : static_cast<std::uint8_t>((i / (1 + trial % 150)) % 3);
     std::vector<std::uint8_t> packed, back;
     packbits_encode(raw, packed);
-    EXPECT_LE(packed.size(), raw.size() + raw.size() / 128 + 1);
+    EXPECT_LE(packed.size(), packbits_max_size(raw.size()));
     ASSERT_TRUE(packbits_decode(packed, raw.size(), back));
     ASSERT_EQ(back, raw) << "trial " << trial;
   }
@@ -58,6 +58,41 @@ TEST(PackBits, RefusesBrokenStreams) {
   s = packbits_decode(std::vector<std::uint8_t>{0x00, 7}, 2, out);
   ASSERT_FALSE(s);
   EXPECT_NE(s.error().message.find("decoded 1 bytes, expected 2"), std::string::npos);
+}
+
+TEST(PackBits, ReencodesTheTiffExampleToItsOwnSize) {
+  // TIFF 6.0, section 9: the same 24 bytes encode to as few bytes as the specification's stream.
+  const std::vector<std::uint8_t> raw = {0xAA, 0xAA, 0xAA, 0x80, 0x00, 0x2A, 0xAA, 0xAA, 0xAA, 0xAA, 0x80, 0x00,
+                                         0x2A, 0x22, 0xAA, 0xAA, 0xAA, 0xAA, 0xAA, 0xAA, 0xAA, 0xAA, 0xAA, 0xAA};
+  std::vector<std::uint8_t> packed;
+  packbits_encode(raw, packed);
+  EXPECT_EQ(packed.size(), 15u);
+}
+
+TEST(PackBits, FixedBufferAndAppendingEncodersAgreeAndMeetTheWorstCase) {
+  std::mt19937 rng(11);
+  for (std::size_t n : {0u, 1u, 2u, 127u, 128u, 129u, 1000u, 4097u}) {
+    std::vector<std::uint8_t> raw(n);
+    for (auto& b : raw) b = static_cast<std::uint8_t>(rng());  // incompressible: the worst case
+    std::vector<std::uint8_t> fixed(packbits_max_size(n));
+    fixed.resize(packbits_encode(raw, fixed.data()));
+    std::vector<std::uint8_t> appended = {0x5A};
+    packbits_encode(raw, appended);
+    EXPECT_EQ(std::vector<std::uint8_t>(appended.begin() + 1, appended.end()), fixed) << n << " bytes";
+    EXPECT_LE(fixed.size(), packbits_max_size(n));
+  }
+}
+
+TEST(PackBits, BlankRowsShrinkByFarMoreThan60x) {
+  std::vector<std::uint8_t> blank(9449, 0), packed;
+  packbits_encode(blank, packed);
+  EXPECT_LE(packed.size(), 2 * (9449 / 128 + 1));
+}
+
+TEST(PackBits, HeaderMinus128IsANoOp) {
+  std::vector<std::uint8_t> out;
+  ASSERT_TRUE(packbits_decode(std::vector<std::uint8_t>{0x80, 0x00, 9}, 1, out));
+  EXPECT_EQ(out, std::vector<std::uint8_t>{9});
 }
 
 }  // namespace

@@ -50,7 +50,7 @@ inline nlohmann::json run_plan_job(const host::Job& job, const std::filesystem::
                                    const std::filesystem::path& plan_dir, std::int64_t resume_after = -1) {
   host::RunOptions o;
   o.out_dir = out;
-  o.printer_override = "none";
+  o.printer_override = host::PrinterChoice::kNone;
   o.plan_dir = plan_dir;
   o.resume_after_swath = resume_after;
   o.job_id = 1;

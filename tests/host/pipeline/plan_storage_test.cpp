@@ -89,7 +89,7 @@ TEST(PlanStorage, ASwathThatDiffersFromThePlanIsNeverSent) {
 
   host::RunOptions o;
   o.out_dir = dir / "out2";
-  o.printer_override = "none";
+  o.printer_override = host::PrinterChoice::kNone;
   o.plan_dir = dir / "plan";
   o.resume_after_swath = 1;
   o.job_id = 1;
@@ -112,7 +112,7 @@ TEST(PlanStorage, ACorruptStoredGarmentFailsNamingTheFile) {
 
   host::RunOptions o;
   o.out_dir = dir / "out2";
-  o.printer_override = "none";
+  o.printer_override = host::PrinterChoice::kNone;
   o.plan_dir = dir / "plan";
   auto st = host::run_job(job, o, {});
   ASSERT_FALSE(st);

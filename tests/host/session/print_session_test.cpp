@@ -330,7 +330,7 @@ TEST(PrintSession, RefusesJobIdZeroWhichThePrinterReportsAsNoJob) {
 TEST(PrintSession, RefusesThePrintsimPrinterOutsidePrintsim) {
   if (std::getenv("TP_PRINTSIM")) GTEST_SKIP() << "running under printsim";
   PrinterConfig cfg;
-  cfg.printer = "sim";
+  cfg.printer = PrinterChoice::kSim;
   auto s = PrintSession::open(cfg);
   ASSERT_FALSE(s);
   EXPECT_NE(s.error().message.find("printsim run"), std::string::npos) << s.error().message;
