@@ -7,7 +7,7 @@
 #include "geometry/garment/fit_checks.h"
 #include "geometry/garment/flat_garment.h"
 #include "geometry/garment/garment_obj.h"
-#include "geometry/garment/sew_garment.h"
+#include "geometry/sewing/sew_garment.h"
 #include "geometry/samples/garments.h"
 #include "host/pipeline/garment_checks.h"
 #include "host/pipeline/garment_files.h"

@@ -13,7 +13,7 @@
 #include "geometry/garment/align_to_body.h"
 #include "geometry/garment/distortion.h"
 #include "geometry/garment/fit_checks.h"
-#include "geometry/garment/sew_garment.h"
+#include "geometry/sewing/sew_garment.h"
 #include "geometry/mesh/mesh_pattern.h"
 #include "geometry/pattern/garmentcode.h"
 #include "geometry/pattern/load_pattern.h"

@@ -7,7 +7,7 @@
 #include "geometry/body/marching_tetrahedra.h"
 #include "geometry/garment/align_to_body.h"
 #include "geometry/garment/fit_checks.h"
-#include "geometry/garment/sew_garment.h"
+#include "geometry/sewing/sew_garment.h"
 #include "tests/geometry/garment/tube_fixture.h"
 
 namespace tp::geometry {
