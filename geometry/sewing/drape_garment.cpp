@@ -21,9 +21,9 @@ Result<Garment> drape_garment(const Garment& sewn, const BodySdf& body, const Dr
   p.damping_per_s = o.damping_per_s;
   p.body_thickness_mm = o.clearance_mm;
   p.self_thickness_mm = o.self_thickness_mm;
-  // A quarter of the layer distance: a vertex moves at most 2 x max_move per substep, so two
-  // layers close by at most the thickness in one substep and every substep pushes them apart.
-  p.max_move_mm = 0.25 * o.self_thickness_mm;
+  // A vertex moves at most 2 x max_move per substep, so two layers close by at most 0.6 x the
+  // thickness in one substep and every substep pushes them apart.
+  p.max_move_mm = 0.15 * o.self_thickness_mm;
   p.stretch_limit = o.material.stretch_limit;
   p.stretch_stiffness = o.material.stretch_stiffness;
   p.friction = o.material.friction;

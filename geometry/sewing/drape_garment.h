@@ -12,7 +12,7 @@ namespace tp::geometry {
 /// Controls of draping. Defaults are the ones docs/garments.md measures.
 struct DrapeOptions {
   ClothMaterial material;            ///< default: cotton-poplin
-  double duration_s = 1.5;           ///< simulated time limit (stops earlier once settled)
+  double duration_s = 1.0;           ///< simulated time limit (stops earlier once settled)
   double substep_s = 1.0 / 400;
   double damping_per_s = 4;
   double clearance_mm = 3;           ///< distance kept from the body (as sewing's)

@@ -108,16 +108,19 @@ SelfCollisionPairs find_self_collision_pairs(const ClothModel& cloth, const std:
   for (const Vec3& p : x) { auto c = vh.cell(p); vh.count(vh.slot(c[0], c[1], c[2])); }
   vh.finish_counts();
   for (size_t i = 0; i < x.size(); ++i) { auto c = vh.cell(x[i]); vh.fill(vh.slot(c[0], c[1], c[2]), static_cast<int>(i)); }
-  std::vector<int> found;
+  // Visited stamps dedupe a query's hits without sorting (the order stays the cells' order).
+  std::vector<int> found, stamp_v(x.size(), -1), stamp_e(cloth.edges.size(), -1);
   for (size_t f = 0; f < cloth.triangles.size(); ++f) {
     const RestTriangle& t = cloth.triangles[f];
     const Vec3 a = x[t.v[0]], b = x[t.v[1]], c = x[t.v[2]];
     const Vec3 lo{std::min({a.x, b.x, c.x}), std::min({a.y, b.y, c.y}), std::min({a.z, b.z, c.z})};
     const Vec3 hi{std::max({a.x, b.x, c.x}), std::max({a.y, b.y, c.y}), std::max({a.z, b.z, c.z})};
     found.clear();
-    for_cells(vh, lo - pad, hi + pad, [&](size_t s) { vh.visit(s, [&](int v) { found.push_back(v); }); });
-    std::sort(found.begin(), found.end());
-    found.erase(std::unique(found.begin(), found.end()), found.end());
+    for_cells(vh, lo - pad, hi + pad, [&](size_t s) {
+      vh.visit(s, [&](int v) {
+        if (stamp_v[v] != static_cast<int>(f)) stamp_v[v] = static_cast<int>(f), found.push_back(v);
+      });
+    });
     const Vec3 n = triangle_normal(x, t);
     const Vec3 plo = lo - pad, phi = hi + pad;
     for (int v : found) {
@@ -154,9 +157,11 @@ SelfCollisionPairs find_self_collision_pairs(const ClothModel& cloth, const std:
     Vec3 lo, hi;
     edge_box(ea, lo, hi);
     found.clear();
-    for_cells(eh, lo, hi, [&](size_t s) { eh.visit(s, [&](int o) { if (o > static_cast<int>(k)) found.push_back(o); }); });
-    std::sort(found.begin(), found.end());
-    found.erase(std::unique(found.begin(), found.end()), found.end());
+    for_cells(eh, lo, hi, [&](size_t s) {
+      eh.visit(s, [&](int o) {
+        if (o > static_cast<int>(k) && stamp_e[o] != static_cast<int>(k)) stamp_e[o] = static_cast<int>(k), found.push_back(o);
+      });
+    });
     for (int o : found) {
       const auto& eb = cloth.edges[o];
       if (ea[0] == eb[0] || ea[0] == eb[1] || ea[1] == eb[0] || ea[1] == eb[1]) continue;

@@ -30,7 +30,7 @@ struct SelfCollisionPairs {
 };
 
 /// Every vertex-triangle and edge-edge pair (sharing no vertex) closer than `margin_mm` at `x`,
-/// found through a spatial hash of cell size about the mean edge; sorted, so deterministic.
+/// found through a spatial hash of cell size about the mean edge, in a fixed order.
 SelfCollisionPairs find_self_collision_pairs(const ClothModel& cloth, const std::vector<Vec3>& x, double margin_mm);
 
 /// Pushes every candidate pair found closer than `thickness_mm` (or on the other side than it
