@@ -133,6 +133,7 @@ void bench_one(const std::string& name, geometry::Pattern pattern, const geometr
   // The drape in the bench's fabric: its time and whether it stayed untangled and outside the body.
   double drape_seconds = 0;
   int drape_self = -1, drape_inside = -1;
+  double drape_strain_p95 = -1;
   if (a.drape) {
     geometry::DrapeOptions d;
     auto m = geometry::cloth_material_preset(a.material);
@@ -144,7 +145,9 @@ void bench_one(const std::string& name, geometry::Pattern pattern, const geometr
     if (!dg) return error_line(dg.error().what());
     drape_seconds = ds.seconds;
     drape_self = geometry::count_self_intersections(*dg);
-    drape_inside = geometry::measure_distortion(pattern, *dg, &body).inside_body;
+    const geometry::DistortionReport dr = geometry::measure_distortion(pattern, *dg, &body);
+    drape_inside = dr.inside_body;
+    drape_strain_p95 = dr.strain_p95;
     if (!a.out.empty())
       if (auto st = write_garment_files(a.out, name + "_draped", pattern, *dg, body.mesh(), name + "_body"); !st)
         die(st.error().what(), 1);
@@ -154,12 +157,12 @@ void bench_one(const std::string& name, geometry::Pattern pattern, const geometr
   for (const auto& f : fit.failures) failed += (failed.empty() ? "" : ",") + f.check;
   std::printf("garment=%s vertices=%d stitches=%zu suggested=%d stitch_gap_max_mm=%.2f stitch_gap_p95_mm=%.2f "
               "self_intersections=%d inside_body=%d body_distance_p50_mm=%.1f body_distance_p95_mm=%.1f off_body=%.4f unsewn=%zu "
-              "strain_mean=%.4f strain_p95=%.4f seam_len_diff_max=%.4f aligned=%s seconds=%.2f drape_seconds=%.2f drape_self_intersections=%d drape_inside_body=%d "
+              "strain_mean=%.4f strain_p95=%.4f seam_len_diff_max=%.4f aligned=%s seconds=%.2f drape_seconds=%.2f drape_self_intersections=%d drape_inside_body=%d drape_strain_p95=%.4f "
               "gathered_fraction=%.3f checks=%s%s%s\n",
               name.c_str(), r.vertices, pattern.stitches.size(), suggested, fit.stitch_gap_max_mm, fit.stitch_gap_p95_mm,
               fit.self_intersections, fit.inside_body, fit.body_distance_p50_mm, fit.body_distance_p95_mm, fit.off_body, fit.unsewn_pieces.size(),
               r.strain_mean, r.strain_p95, r.seam_len_diff_max, al->moved ? "yes" : "no", seconds,
-              drape_seconds, drape_self, drape_inside, gathered_fraction(r),
+              drape_seconds, drape_self, drape_inside, drape_strain_p95, gathered_fraction(r),
               fit.pass ? "pass" : "fail", failed.empty() ? "" : " failed=", failed.c_str());
   for (const auto& f : fit.failures) std::printf("  %s: %s (look at %s_%s.png)\n", f.check.c_str(), f.message.c_str(), name.c_str(), f.view.c_str());
   std::fflush(stdout);
