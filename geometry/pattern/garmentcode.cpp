@@ -13,6 +13,7 @@
 #include "geometry/pattern/orient.h"
 #include "geometry/pattern/placement.h"
 #include "geometry/pattern/role.h"
+#include "geometry/pattern/validate.h"
 
 namespace tp::geometry {
 namespace {
@@ -278,6 +279,16 @@ Result<Pattern> read_garmentcode(std::string_view text, const std::string& sourc
       for (size_t k = 2; k < s.size(); ++k) right_wrong = right_wrong || (s[k].is_string() && s[k] == "right_wrong");
       pattern.stitches.push_back(Stitch{a, b, right_wrong});
     }
+  }
+  // GarmentCode gathers by design (its `ruffle` lengthens one side of a stitch): a stitch whose
+  // sides differ beyond the validator's tolerance is marked gathered with its ratio, so it is
+  // sewn with the longer side distributed along the shorter, not refused.
+  const ValidationOptions tolerance;
+  for (Stitch& st : pattern.stitches) {
+    const double la = span_length_mm(pattern, st.a), lb = span_length_mm(pattern, st.b);
+    const double longer = std::max(la, lb), shorter = std::min(la, lb);
+    const double allowed = std::max(tolerance.stitch_length_tolerance_mm, tolerance.stitch_length_tolerance_ratio * longer);
+    if (shorter > 0 && longer - shorter > allowed) st.ease_ratio = longer / shorter;
   }
   if (options.fix_orientation)
     for (const std::string& n : orient_counter_clockwise(pattern))

@@ -104,6 +104,9 @@ struct EdgeSpan {
 struct Stitch {
   EdgeSpan a, b;
   bool same_direction = false;
+  /// Eased or gathered seam: the longer side may be up to this many times the shorter, and is
+  /// distributed along it (the excess becomes folds). 0: an ordinary seam, both sides equal.
+  double ease_ratio = 0;
 };
 
 /// A sewing pattern for one garment in one size.

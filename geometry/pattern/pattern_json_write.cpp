@@ -142,6 +142,7 @@ std::string write_pattern_json(const Pattern& pattern) {
   for (const Stitch& s : pattern.stitches) {
     ojson j{{"a", side_json(pattern, s.a)}, {"b", side_json(pattern, s.b)}};
     if (s.same_direction) j["same_direction"] = true;
+    if (s.ease_ratio > 0) j["ease"] = s.ease_ratio;
     stitches.push_back(std::move(j));
   }
   root["stitches"] = std::move(stitches);

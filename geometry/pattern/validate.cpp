@@ -160,6 +160,16 @@ void check_stitches(const Pattern& pattern, const ValidationOptions& o, std::vec
     if (!refs_ok) continue;
     double la = span_length_mm(pattern, st.a), lb = span_length_mm(pattern, st.b);
     double allowed = std::max(o.stitch_length_tolerance_mm, o.stitch_length_tolerance_ratio * std::max(la, lb));
+    if (st.ease_ratio > 0) {
+      // Marked eased or gathered: the longer side may be up to ease_ratio times the shorter.
+      const double longer = std::max(la, lb), shorter = std::min(la, lb);
+      if (longer > st.ease_ratio * shorter + allowed)
+        out.push_back(Error{ErrorCode::kInvalidPattern,
+                            who + ": " + describe_edge(pattern, st.a.piece, st.a.edge) + " is " + mm(la) + " mm and " +
+                                describe_edge(pattern, st.b.piece, st.b.edge) + " is " + mm(lb) +
+                                " mm: more than the stitch's ease ratio " + mm(st.ease_ratio) + " allows"});
+      continue;
+    }
     if (std::abs(la - lb) > allowed)
       out.push_back(Error{ErrorCode::kInvalidPattern,
                           who + ": " + describe_edge(pattern, st.a.piece, st.a.edge) + " is " + mm(la) + " mm but " +

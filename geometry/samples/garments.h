@@ -10,7 +10,7 @@
 #include "geometry/body/measurements.h"
 #include "geometry/common/error.h"
 #include "geometry/garment/garment.h"
-#include "geometry/garment/sew_garment.h"
+#include "geometry/sewing/sew_garment.h"
 #include "geometry/pattern/pattern.h"
 
 namespace tp::geometry::samples {

@@ -24,6 +24,16 @@ struct GarmentChecksSpec {
 };
 
 /// Where the garment comes from.
+/// The fabric the garment is draped in: a preset ("jersey", "cotton-poplin", "silk-satin",
+/// "denim") with any of its values overridden.
+struct GarmentMaterialSpec {
+  std::string preset = "cotton-poplin";
+  std::optional<double> density_g_m2;
+  std::optional<double> stretch_limit;
+  std::optional<double> bending_rigidity_uN_m;
+  std::optional<double> friction;
+};
+
 struct GarmentSpec {
   std::optional<std::filesystem::path> pattern;       ///< pattern file (native JSON, GarmentCode, SVG, DXF)
   std::string pattern_format = "auto";
@@ -40,6 +50,9 @@ struct GarmentSpec {
   std::optional<std::filesystem::path> stitches_file; ///< stitches file (printctl pattern suggest), added to the pattern's
   GarmentChecksSpec checks;
   double mesh_edge_mm = 15;                           ///< target triangle edge length
+  GarmentMaterialSpec material;                       ///< fabric of the drape
+  bool drape = true;                                  ///< settle the sewn garment under gravity (previews)
+  std::string correspondence = "sewn";                ///< "sewn" or "draped": the garment the design is made on
 };
 
 /// One layer of the print design (units mm, directions unit-free).

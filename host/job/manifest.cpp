@@ -6,6 +6,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "geometry/sewing/cloth_material.h"
 #include "host/job/design_limits.h"
 #include "host/job/internal/field_reader.h"
 
@@ -43,9 +44,28 @@ void read_asset(FieldReader& r, const std::string& key, bool required, const Job
   out = *resolved;
 }
 
+// garment.material: a preset name, or {"preset": name, <field>: value, ...} overriding its values.
+void read_material(FieldReader& g, GarmentMaterialSpec& spec) {
+  const nlohmann::json* raw = g.raw("material");
+  if (!raw) return;
+  const std::vector<std::string> presets = geometry::cloth_material_names();
+  if (raw->is_string()) {
+    if (auto v = g.choice("material", false, presets)) spec.preset = *v;
+    return;
+  }
+  auto m = g.object("material", false);
+  if (!m) return;
+  m->reject_unknown({"preset", "density_g_m2", "stretch_limit", "bending_rigidity_uN_m", "friction"});
+  if (auto v = m->choice("preset", false, presets)) spec.preset = *v;
+  spec.density_g_m2 = m->number("density_g_m2", false, 1, 2000);
+  spec.stretch_limit = m->number("stretch_limit", false, 0.001, 0.5);
+  spec.bending_rigidity_uN_m = m->number("bending_rigidity_uN_m", false, 0, 10000);
+  spec.friction = m->number("friction", false, 0, 2);
+}
+
 void read_garment(FieldReader g, const JobPackage* pkg, GarmentSpec& spec) {
   g.reject_unknown({"pattern", "pattern_format", "garment_mesh", "sample", "size", "body", "stitches", "mesh_edge",
-                    "suggest_min_score", "stitches_file", "checks"});
+                    "suggest_min_score", "stitches_file", "checks", "material", "drape", "correspondence"});
   read_asset(g, "pattern", false, pkg, spec.pattern);
   if (auto v = g.choice("pattern_format", false, {"auto", "native", "garmentcode", "freesewing-svg", "dxf-aama"}))
     spec.pattern_format = *v;
@@ -63,6 +83,11 @@ void read_garment(FieldReader g, const JobPackage* pkg, GarmentSpec& spec) {
     if (auto v = c->number("inside_body", false, 0, 1)) spec.checks.max_inside_body = *v;
     if (auto v = c->number("off_body", false, 0, 1)) spec.checks.max_off_body = *v;
   }
+  read_material(g, spec.material);
+  if (auto v = g.boolean("drape", false)) spec.drape = *v;
+  if (auto v = g.choice("correspondence", false, {"sewn", "draped"})) spec.correspondence = *v;
+  if (spec.correspondence == "draped" && !spec.drape)
+    g.problems().add(g.pointer_of("correspondence"), "\"draped\" needs \"drape\": true");
   int sources = (spec.pattern ? 1 : 0) + (spec.garment_mesh ? 1 : 0) + (spec.sample.empty() ? 0 : 1);
   if (sources == 0 && !g.problems().items().size())
     g.problems().add(g.pointer(), "one of \"pattern\", \"garment_mesh\" or \"sample\" is required");

@@ -7,7 +7,8 @@
 #include "geometry/garment/fit_checks.h"
 #include "geometry/garment/flat_garment.h"
 #include "geometry/garment/garment_obj.h"
-#include "geometry/garment/sew_garment.h"
+#include "geometry/sewing/drape_garment.h"
+#include "geometry/sewing/sew_garment.h"
 #include "geometry/samples/garments.h"
 #include "host/pipeline/garment_checks.h"
 #include "host/pipeline/garment_files.h"
@@ -38,6 +39,40 @@ Result<std::shared_ptr<const geometry::BodySdf>> job_body(const PipelineState& p
     return *sdf;
   }
   return std::shared_ptr<const geometry::BodySdf>();
+}
+
+// The job's fabric: its preset with the job's overrides.
+Result<geometry::ClothMaterial> job_material(const GarmentMaterialSpec& spec) {
+  auto m = geometry::cloth_material_preset(spec.preset);
+  if (!m) return fail(from_geometry(m.error()).with_context("garment.material"));
+  if (spec.density_g_m2) m->density_g_m2 = *spec.density_g_m2;
+  if (spec.stretch_limit) m->stretch_limit = *spec.stretch_limit;
+  if (spec.bending_rigidity_uN_m) m->bending_rigidity_uN_m = *spec.bending_rigidity_uN_m;
+  if (spec.friction) m->friction = *spec.friction;
+  if (auto ok = geometry::validate_cloth_material(*m); !ok) return fail(from_geometry(ok.error()).with_context("garment.material"));
+  return *m;
+}
+
+// Drapes the sewn garment in the job's fabric; its figures go into report.garment.drape.
+Result<geometry::Garment> drape_job_garment(PipelineState& ps, nlohmann::json& figures) {
+  auto material = job_material(ps.job.garment.material);
+  if (!material) return fail(material.error());
+  geometry::DrapeOptions o;
+  o.material = *material;
+  geometry::DrapeStats st;
+  auto g = geometry::drape_garment(*ps.garment, *ps.body, o, &st, &ps.cancel);
+  if (!g) return fail(from_geometry(g.error()));
+  figures = {{"material", material->name},
+                                   {"density_g_m2", material->density_g_m2},
+                                   {"stretch_limit", material->stretch_limit},
+                                   {"bending_rigidity_uN_m", material->bending_rigidity_uN_m},
+                                   {"friction", material->friction},
+                                   {"substeps", st.substeps},
+                                   {"simulated_s", st.simulated_s},
+                                   {"max_speed_mm_s", st.max_speed_mm_s},
+                                   {"self_intersections", geometry::count_self_intersections(*g)},
+                                   {"seconds", st.seconds}};
+  return std::move(*g);
 }
 
 }  // namespace
@@ -80,6 +115,15 @@ Status stage_garment(PipelineState& ps) {
     ps.garment = std::move(*g);
     ps.garment_is_3d = false;
   }
+  // The job may make its design on the draped garment: then it is the one measured and checked.
+  std::optional<geometry::Garment> draped;
+  nlohmann::json drape_figures;
+  if (ps.garment_is_3d && ps.body && ps.job.garment.drape) {
+    auto g = drape_job_garment(ps, drape_figures);
+    if (!g) return fail(g.error());
+    draped = std::move(*g);
+    if (ps.job.garment.correspondence == "draped") ps.garment = *draped;
+  }
   geometry::DistortionReport d = geometry::measure_distortion(ps.pattern, *ps.garment, ps.body.get());
   ps.report["garment"] = {{"mode", ps.garment_is_3d ? "3d" : "flat"},
                           {"vertices", d.vertices},
@@ -93,6 +137,10 @@ Status stage_garment(PipelineState& ps) {
                           {"min_clearance_mm", ps.body ? d.min_clearance_mm : 0.0}};
   ps.report["garment"]["stitches"] = stitches_json(ps.pattern, ps.stitch_sources, stats.stitch_gap_mm);
   if (!alignment.is_null()) ps.report["garment"]["alignment"] = alignment;
+  if (draped) {
+    drape_figures["correspondence"] = ps.job.garment.correspondence;
+    ps.report["garment"]["drape"] = drape_figures;
+  }
   if (!ps.garment_is_3d) {
     if (!ps.stage_reused)
       if (auto st = save_plan_garment(ps, stats.stitch_gap_mm); !st) return st;
@@ -106,6 +154,14 @@ Status stage_garment(PipelineState& ps) {
                                          rip::PngChannels::kRgba);
   if (!previews) return fail(previews.error());
   ps.report["garment"]["files"] = {{"obj", "garment.obj"}, {"previews", *previews}};
+  if (draped) {
+    // The garment as worn: the draped one's previews beside the sewn one's.
+    if (auto st = write_text_file(out / "garment-draped.obj", geometry::garment_to_obj(ps.pattern, *draped)); !st) return st;
+    auto dp = write_garment_previews(out, "garment-draped-", *draped, &ps.body->mesh(), rip::PngChannels::kRgba);
+    if (!dp) return fail(dp.error());
+    ps.report["garment"]["files"]["draped_obj"] = "garment-draped.obj";
+    ps.report["garment"]["files"]["draped_previews"] = *dp;
+  }
 
   // Fit checks on the final garment: a garment not sewn, tangled or off the body fails here.
   const geometry::FitLimits limits = fit_limits(ps.job.garment.checks);

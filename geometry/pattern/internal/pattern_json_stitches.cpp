@@ -106,6 +106,13 @@ Status read_pattern_json_stitches(const json& root, const JsonPath& at, double s
       TP_TRY(flag, get_bool(*v, si / "same_direction"));
       same = flag;
     }
+    double ease = 0;
+    if (const json* v = member(s, "ease")) {
+      TP_TRY(r, get_number(*v, si / "ease"));
+      if (!(r >= 1 && r <= 4))
+        return std::unexpected((si / "ease").error(ErrorCode::kInvalidPattern, "ease ratio must be in [1, 4]"));
+      ease = r;
+    }
     TP_TRY(ia, instances(*a, si / "a", unfolded, pattern));
     TP_TRY(ib, instances(*b, si / "b", unfolded, pattern));
     if (ia.size() != ib.size())
@@ -115,7 +122,7 @@ Status read_pattern_json_stitches(const json& root, const JsonPath& at, double s
     for (size_t k = 0; k < ia.size(); ++k) {
       TP_TRY(sa, span_of(*a, si / "a", scale, ia[k], pattern));
       TP_TRY(sb, span_of(*b, si / "b", scale, ib[k], pattern));
-      pattern.stitches.push_back(Stitch{sa, sb, same});
+      pattern.stitches.push_back(Stitch{sa, sb, same, ease});
     }
   }
   return {};

@@ -1,7 +1,9 @@
 // host/app/printctl/cmd_bench_garment.cpp: `printctl bench garment`: builds garments at a given vertex
 // count (samples, one pattern, or every pattern of a corpus folder) and prints their distortion,
 // fit-check figures and build time.
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -13,7 +15,8 @@
 #include "geometry/garment/align_to_body.h"
 #include "geometry/garment/distortion.h"
 #include "geometry/garment/fit_checks.h"
-#include "geometry/garment/sew_garment.h"
+#include "geometry/sewing/drape_garment.h"
+#include "geometry/sewing/sew_garment.h"
 #include "geometry/mesh/mesh_pattern.h"
 #include "geometry/pattern/garmentcode.h"
 #include "geometry/pattern/load_pattern.h"
@@ -43,7 +46,21 @@ struct BenchGarmentArgs {
   double min_score = geometry::SuggestOptions{}.min_score;  ///< suggestions for patterns without stitches
   geometry::SewOptions sew;  ///< solver settings other than mesh size and threads
   geometry::FitLimits limits;
+  std::string material = "cotton-poplin";  ///< drape fabric preset
+  bool drape = true;
 };
+
+// Share of the stitched length (longer sides) on stitches whose sides differ by more than 1 %:
+// the eased and gathered seams, sewn with the longer side distributed along the shorter.
+double gathered_fraction(const geometry::DistortionReport& r) {
+  double all = 0, eased = 0;
+  for (const auto& sl : r.seams) {
+    const double longer = std::max(sl.a_mm, sl.b_mm);
+    all += longer;
+    if (std::abs(sl.a_mm - sl.b_mm) > 0.01 * longer) eased += longer;
+  }
+  return all > 0 ? eased / all : 0;
+}
 
 /// Pass/fail tallies of a run, for the corpus summary.
 struct Tally {
@@ -113,15 +130,39 @@ void bench_one(const std::string& name, geometry::Pattern pattern, const geometr
     if (auto st = write_text_file(std::filesystem::path(a.out) / (name + "_seams.txt"), seam_lines(pattern, r)); !st)
       die(st.error().what(), 1);
   }
+  // The drape in the bench's fabric: its time and whether it stayed untangled and outside the body.
+  double drape_seconds = 0;
+  int drape_self = -1, drape_inside = -1;
+  double drape_strain_p95 = -1;
+  if (a.drape) {
+    geometry::DrapeOptions d;
+    auto m = geometry::cloth_material_preset(a.material);
+    if (!m) die(m.error().message, 2);
+    d.material = *m;
+    d.threads = a.threads;
+    geometry::DrapeStats ds;
+    auto dg = geometry::drape_garment(*g, body, d, &ds);
+    if (!dg) return error_line(dg.error().what());
+    drape_seconds = ds.seconds;
+    drape_self = geometry::count_self_intersections(*dg);
+    const geometry::DistortionReport dr = geometry::measure_distortion(pattern, *dg, &body);
+    drape_inside = dr.inside_body;
+    drape_strain_p95 = dr.strain_p95;
+    if (!a.out.empty())
+      if (auto st = write_garment_files(a.out, name + "_draped", pattern, *dg, body.mesh(), name + "_body"); !st)
+        die(st.error().what(), 1);
+  }
   (fit.pass ? tally.pass : tally.fail)++;
   std::string failed;
   for (const auto& f : fit.failures) failed += (failed.empty() ? "" : ",") + f.check;
   std::printf("garment=%s vertices=%d stitches=%zu suggested=%d stitch_gap_max_mm=%.2f stitch_gap_p95_mm=%.2f "
               "self_intersections=%d inside_body=%d body_distance_p50_mm=%.1f body_distance_p95_mm=%.1f off_body=%.4f unsewn=%zu "
-              "strain_mean=%.4f strain_p95=%.4f seam_len_diff_max=%.4f aligned=%s seconds=%.2f checks=%s%s%s\n",
+              "strain_mean=%.4f strain_p95=%.4f seam_len_diff_max=%.4f aligned=%s seconds=%.2f drape_seconds=%.2f drape_self_intersections=%d drape_inside_body=%d drape_strain_p95=%.4f "
+              "gathered_fraction=%.3f checks=%s%s%s\n",
               name.c_str(), r.vertices, pattern.stitches.size(), suggested, fit.stitch_gap_max_mm, fit.stitch_gap_p95_mm,
               fit.self_intersections, fit.inside_body, fit.body_distance_p50_mm, fit.body_distance_p95_mm, fit.off_body, fit.unsewn_pieces.size(),
               r.strain_mean, r.strain_p95, r.seam_len_diff_max, al->moved ? "yes" : "no", seconds,
+              drape_seconds, drape_self, drape_inside, drape_strain_p95, gathered_fraction(r),
               fit.pass ? "pass" : "fail", failed.empty() ? "" : " failed=", failed.c_str());
   for (const auto& f : fit.failures) std::printf("  %s: %s (look at %s_%s.png)\n", f.check.c_str(), f.message.c_str(), name.c_str(), f.view.c_str());
   std::fflush(stdout);
@@ -236,6 +277,8 @@ void register_bench_garment(CLI::App& bench) {
       ->check(CLI::Range(0.0, 1.0));
   cmd->add_option("--max-off-body", args->limits.max_off_body, "fit check: area fraction over 150 mm from the body")
       ->check(CLI::Range(0.0, 1.0));
+  cmd->add_option("--material", args->material, "drape fabric preset (jersey, cotton-poplin, silk-satin, denim)");
+  cmd->add_flag("!--no-drape", args->drape, "skip the drape after sewing");
   cmd->add_option("--out", args->out, "also write each garment's OBJ, body OBJ, previews and seam lengths into this folder");
   cmd->add_option("--data", args->data, "shared reference data folder (default $TP_SHARED_DATA or ../shared/data)");
   cmd->callback([args] { run_bench_garment(*args); });

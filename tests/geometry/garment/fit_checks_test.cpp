@@ -7,7 +7,7 @@
 #include "geometry/body/marching_tetrahedra.h"
 #include "geometry/garment/align_to_body.h"
 #include "geometry/garment/fit_checks.h"
-#include "geometry/garment/sew_garment.h"
+#include "geometry/sewing/sew_garment.h"
 #include "tests/geometry/garment/tube_fixture.h"
 
 namespace tp::geometry {
@@ -73,6 +73,20 @@ TEST(FitChecks, GarmentSewnOnTheWrongBodyFails) {
   FitReport r = check_fit(p, s.garment, &wrong, s.stats.stitch_gap_mm);
   EXPECT_FALSE(r.pass);
   EXPECT_TRUE(failed(r, "off_body"));
+}
+
+TEST(FitChecks, GarmentSewnOnASmallerBodyIsInsideTheJobsBody) {
+  // Sewn on a slim body, then checked on a broader one in the same place (a job whose body
+  // changed after its garment was planned): the garment is inside it.
+  BodySdf slim = cylinder_body(100, 0, 600);
+  BodySdf broad = cylinder_body(140, 0, 600);
+  Pattern p = tube_pattern();
+  Sewn s = sew(p, slim);
+  ASSERT_TRUE(check_fit(p, s.garment, &slim, s.stats.stitch_gap_mm).pass);
+  FitReport r = check_fit(p, s.garment, &broad, s.stats.stitch_gap_mm);
+  EXPECT_FALSE(r.pass);
+  EXPECT_TRUE(failed(r, "inside_body"));
+  EXPECT_GT(r.inside_body, 0);
 }
 
 TEST(FitChecks, StitchGapBeyondTheLimitNamesTheStitch) {

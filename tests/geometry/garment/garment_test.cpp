@@ -8,7 +8,7 @@
 #include "geometry/body/marching_tetrahedra.h"
 #include "geometry/garment/distortion.h"
 #include "geometry/garment/garment_obj.h"
-#include "geometry/garment/sew_garment.h"
+#include "geometry/sewing/sew_garment.h"
 #include "tests/geometry/garment/tube_fixture.h"
 
 namespace tp::geometry {

@@ -7,7 +7,7 @@
 #include "geometry/body/body_sdf.h"
 #include "geometry/body/load_body_obj.h"
 #include "geometry/garment/distortion.h"
-#include "geometry/garment/sew_garment.h"
+#include "geometry/sewing/sew_garment.h"
 #include "geometry/mesh/mesh_pattern.h"
 #include "geometry/samples/garments.h"
 #include "geometry/pattern/garmentcode.h"

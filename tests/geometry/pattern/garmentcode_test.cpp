@@ -44,9 +44,22 @@ TEST_P(GarmentCodeFiles, LoadRightSideUpAndValidate) {
     Vec3 outward{centre.x, 0, centre.z};
     EXPECT_GT(dot(normal, outward), 0) << p.name;
   }
-  // The only problems are stitches whose sides differ in length in the source (GarmentCode
-  // gathers or eases them); each message gives both lengths.
+  // Stitches whose sides differ in length in the source (GarmentCode gathers or eases them) are
+  // marked gathered with their ratio, and then the pattern validates.
+  size_t gathered = 0;
+  for (const Stitch& st : r->stitches) {
+    if (st.ease_ratio == 0) continue;
+    ++gathered;
+    const double la = span_length_mm(*r, st.a), lb = span_length_mm(*r, st.b);
+    EXPECT_NEAR(st.ease_ratio, std::max(la, lb) / std::min(la, lb), 1e-9);
+  }
+  EXPECT_EQ(gathered, x.length_mismatches);
   auto problems = find_pattern_problems(*r);
+  EXPECT_TRUE(problems.empty()) << problems.front().message;
+  // Unmarked, the same mismatches are refused with both lengths.
+  Pattern unmarked = *r;
+  for (Stitch& st : unmarked.stitches) st.ease_ratio = 0;
+  problems = find_pattern_problems(unmarked);
   EXPECT_EQ(problems.size(), x.length_mismatches);
   for (const Error& e : problems) EXPECT_NE(e.message.find(" mm but "), std::string::npos) << e.message;
 }

@@ -1,5 +1,5 @@
-// geometry/garment/sew_garment.cpp: seams drawn together, merged, and the garment relaxed on the body.
-#include "geometry/garment/sew_garment.h"
+// geometry/sewing/sew_garment.cpp: seams drawn together, merged, and the garment relaxed on the body.
+#include "geometry/sewing/sew_garment.h"
 
 #include <algorithm>
 #include <chrono>
@@ -7,7 +7,7 @@
 #include <numeric>
 
 #include "geometry/garment/initial_placement.h"
-#include "geometry/garment/internal/arap_solver.h"
+#include "geometry/sewing/internal/arap_solver.h"
 
 namespace tp::geometry {
 namespace {

@@ -1,4 +1,4 @@
-// geometry/garment/internal/arap_solver.h: local-global (projective dynamics) relaxation of a cloth
+// geometry/sewing/internal/arap_solver.h: local-global (projective dynamics) relaxation of a cloth
 // mesh against its 2D rest shape, with seam springs, gravity and body contact.
 #pragma once
 

@@ -1,4 +1,4 @@
-// geometry/garment/sew_garment.h: the 3D garment: pieces meshed, placed, sewn and relaxed on a body.
+// geometry/sewing/sew_garment.h: the 3D garment: pieces meshed, placed, sewn and relaxed on a body.
 #pragma once
 
 #include <vector>

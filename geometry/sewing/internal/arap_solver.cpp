@@ -1,5 +1,5 @@
-// geometry/garment/internal/arap_solver.cpp: ARAP local-global cloth relaxation with body contact.
-#include "geometry/garment/internal/arap_solver.h"
+// geometry/sewing/internal/arap_solver.cpp: ARAP local-global cloth relaxation with body contact.
+#include "geometry/sewing/internal/arap_solver.h"
 
 #include <Eigen/Sparse>
 #include <Eigen/Dense>

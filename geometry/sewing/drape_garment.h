@@ -1,0 +1,44 @@
+// geometry/sewing/drape_garment.h: the sewn garment settled under gravity on the body with a fabric.
+#pragma once
+
+#include "geometry/body/body_sdf.h"
+#include "geometry/common/cancel.h"
+#include "geometry/common/error.h"
+#include "geometry/garment/garment.h"
+#include "geometry/sewing/cloth_material.h"
+
+namespace tp::geometry {
+
+/// Controls of draping. Defaults are the ones docs/garments.md measures.
+struct DrapeOptions {
+  ClothMaterial material;            ///< default: cotton-poplin
+  double duration_s = 1.0;           ///< simulated time limit (stops earlier once settled)
+  double substep_s = 1.0 / 400;
+  double damping_per_s = 4;
+  double clearance_mm = 3;           ///< distance kept from the body (as sewing's)
+  double self_thickness_mm = 2;      ///< distance kept between layers of the garment
+  double settle_speed_mm_s = 4;
+  int threads = 2;
+};
+
+/// What draping did.
+struct DrapeStats {
+  int substeps = 0;
+  double simulated_s = 0;
+  double max_speed_mm_s = 0;
+  int body_contacts = 0;
+  int self_contacts = 0;
+  double seconds = 0;  ///< wall time
+};
+
+/// Drapes `sewn` (a 3D garment from sew_garment) on `body`: XPBD steps with each triangle
+/// strain-limited to its 2D shape, dihedral bending, self-collision (point-triangle and
+/// edge-edge through a spatial hash, substeps short enough that nothing tunnels), body contact
+/// with the material's friction, gravity and damping. The result has the same charts and
+/// vertex numbering; only positions change. Same input, same output to the bit.
+/// Fails with kInvalidArgument for a bad material, kSewing if the solver diverges,
+/// kCancelled when `cancel` fires.
+[[nodiscard]] Result<Garment> drape_garment(const Garment& sewn, const BodySdf& body, const DrapeOptions& options,
+                                            DrapeStats* stats = nullptr, const CancelToken* cancel = nullptr);
+
+}  // namespace tp::geometry

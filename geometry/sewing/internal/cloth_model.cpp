@@ -1,0 +1,120 @@
+// geometry/sewing/internal/cloth_model.cpp: masses, rest shapes and bending stencils of a cloth.
+#include "geometry/sewing/internal/cloth_model.h"
+
+#include <algorithm>
+#include <cmath>
+#include <tuple>
+
+namespace tp::geometry::internal {
+namespace {
+
+// Bending rigidity from micro-newton metres to the solver's g mm^2 / s^2.
+constexpr double kUNmToGmm2s2 = 1e3;
+
+struct HalfEdge {
+  int lo, hi, tri, opposite;
+  bool forward;  ///< the triangle's winding runs lo -> hi
+};
+
+}  // namespace
+
+double dihedral_angle(const std::vector<Vec3>& x, const BendStencil& s, std::array<Vec3, 4>* grad) {
+  const Vec3 a = x[s.a], b = x[s.b], c = x[s.c], d = x[s.d];
+  const Vec3 e = b - a;
+  const double le = norm(e);
+  // Normals of (a, b, c) and (b, a, d), both following their triangle's winding.
+  const Vec3 n1 = cross(e, c - a), n2 = cross(d - a, e);
+  const double q1 = dot(n1, n1), q2 = dot(n2, n2);
+  if (le < 1e-12 || q1 < 1e-20 || q2 < 1e-20) {
+    if (grad) grad->fill(Vec3{});
+    return s.rest_angle;
+  }
+  const double angle = std::atan2(dot(cross(n1, n2), e) / le, dot(n1, n2));
+  if (grad) {
+    // Gradients of the dihedral angle (Bridson et al. 2003; Wardetzky et al. 2007).
+    const Vec3 gc = n1 * (-le / q1), gd = n2 * (-le / q2);
+    const double sc = dot(c - a, e) / (le * le), sd = dot(d - a, e) / (le * le);
+    (*grad)[2] = gc;
+    (*grad)[3] = gd;
+    (*grad)[0] = gc * (sc - 1) + gd * (sd - 1);
+    (*grad)[1] = gc * (-sc) + gd * (-sd);
+  }
+  return angle;
+}
+
+ClothModel build_cloth_model(const Garment& g, const ClothMaterial& m) {
+  ClothModel cm;
+  cm.x_mm = g.vertices_mm;
+  const int n = static_cast<int>(cm.x_mm.size());
+  std::vector<double> mass(n, 0.0);
+  cm.vertex_piece.assign(n, -1);
+  std::vector<int> tri_piece;
+  double edge_sum = 0;
+  int edge_count = 0;
+  for (size_t p = 0; p < g.pieces.size(); ++p) {
+    const GarmentPiece& gp = g.pieces[p];
+    for (size_t v = 0; v < gp.vertex_3d.size(); ++v)
+      if (cm.vertex_piece[gp.vertex_3d[v]] < 0) cm.vertex_piece[gp.vertex_3d[v]] = static_cast<int>(p);
+    for (const auto& t : gp.mesh.triangles) {
+      RestTriangle rt;
+      for (int k = 0; k < 3; ++k) rt.v[k] = gp.vertex_3d[t[k]];
+      if (rt.v[0] == rt.v[1] || rt.v[1] == rt.v[2] || rt.v[0] == rt.v[2]) continue;
+      const Vec2 r0 = gp.mesh.vertices_mm[t[0]], r1 = gp.mesh.vertices_mm[t[1]], r2 = gp.mesh.vertices_mm[t[2]];
+      const Vec2 e1 = r1 - r0, e2 = r2 - r0;
+      const double det = cross(e1, e2);
+      if (std::abs(det) < 1e-9) continue;
+      const Vec2 centroid = (r0 + r1 + r2) / 3.0;
+      rt.rest_mm = {r0 - centroid, r1 - centroid, r2 - centroid};
+      rt.dm_inv[0][0] = e2.y / det, rt.dm_inv[0][1] = -e2.x / det;
+      rt.dm_inv[1][0] = -e1.y / det, rt.dm_inv[1][1] = e1.x / det;
+      rt.area_mm2 = 0.5 * std::abs(det);
+      for (int k = 0; k < 3; ++k) mass[rt.v[k]] += rt.area_mm2 / 3 * m.density_g_m2 * 1e-6;
+      edge_sum += norm(e1) + norm(e2) + norm(r2 - r1), edge_count += 3;
+      cm.triangles.push_back(rt);
+      tri_piece.push_back(static_cast<int>(p));
+    }
+  }
+  cm.mean_edge_mm = edge_count ? edge_sum / edge_count : 0;
+  cm.inv_mass.resize(n);
+  for (int i = 0; i < n; ++i) cm.inv_mass[i] = mass[i] > 0 ? 1 / mass[i] : 0;
+
+  // Half-edges sorted by their undirected edge: unique edges, and a stencil per edge with two.
+  std::vector<HalfEdge> he;
+  for (size_t f = 0; f < cm.triangles.size(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const int i = cm.triangles[f].v[k], j = cm.triangles[f].v[(k + 1) % 3], o = cm.triangles[f].v[(k + 2) % 3];
+      he.push_back({std::min(i, j), std::max(i, j), static_cast<int>(f), o, i < j});
+    }
+  std::sort(he.begin(), he.end(), [](const HalfEdge& p, const HalfEdge& q) {
+    return std::tie(p.lo, p.hi, p.tri) < std::tie(q.lo, q.hi, q.tri);
+  });
+  const double rigidity = m.bending_rigidity_uN_m * kUNmToGmm2s2;
+  for (size_t k = 0; k < he.size();) {
+    size_t e = k;
+    while (e < he.size() && he[e].lo == he[k].lo && he[e].hi == he[k].hi) ++e;
+    cm.edges.push_back({he[k].lo, he[k].hi});
+    if (e - k == 2 && rigidity > 0) {
+      // Orient the stencil along the first triangle's winding.
+      const HalfEdge& h1 = he[k];
+      const HalfEdge& h2 = he[k + 1];
+      BendStencil s;
+      s.a = h1.forward ? h1.lo : h1.hi;
+      s.b = h1.forward ? h1.hi : h1.lo;
+      s.c = h1.opposite;
+      s.d = h2.opposite;
+      const double area = cm.triangles[h1.tri].area_mm2 + cm.triangles[h2.tri].area_mm2;
+      const double len2 = dot(cm.x_mm[s.b] - cm.x_mm[s.a], cm.x_mm[s.b] - cm.x_mm[s.a]);
+      // Discrete-shell weight 3 |e|^2 / (A1 + A2) (Grinspun et al. 2003).
+      s.compliance = 1 / (rigidity * 3 * len2 / area);
+      // Inside a piece the fabric rests flat (sign from windings that agree); across a seam
+      // (or where the windings disagree) the sewn angle is the rest angle.
+      const bool same_piece = tri_piece[h1.tri] == tri_piece[h2.tri] && h1.forward != h2.forward;
+      s.rest_angle = same_piece ? 0.0 : dihedral_angle(cm.x_mm, s, nullptr);
+      cm.bends.push_back(s);
+    }
+    k = e;
+  }
+  return cm;
+}
+
+}  // namespace tp::geometry::internal

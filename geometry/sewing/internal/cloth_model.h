@@ -1,0 +1,49 @@
+// geometry/sewing/internal/cloth_model.h: the cloth the XPBD solver steps: masses, per-triangle
+// rest shapes, bending stencils and edges, built once from a sewn garment.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "geometry/common/vec.h"
+#include "geometry/garment/garment.h"
+#include "geometry/sewing/cloth_material.h"
+
+namespace tp::geometry::internal {
+
+/// One triangle's rest shape: its 2D corners relative to their centroid.
+struct RestTriangle {
+  std::array<int, 3> v{};          ///< 3D vertex indices
+  std::array<Vec2, 3> rest_mm{};   ///< corners minus their centroid, pattern mm
+  double dm_inv[2][2] = {};        ///< inverse of [r1 - r0, r2 - r0]
+  double area_mm2 = 0;
+};
+
+/// Two triangles sharing edge (a, b): c opposite in the first, d in the second.
+struct BendStencil {
+  int a = 0, b = 0, c = 0, d = 0;
+  double rest_angle = 0;    ///< dihedral angle at rest (0: flat), radians
+  double compliance = 0;    ///< 1 / stiffness (rad^2 per g mm^2 s^-2)
+};
+
+/// The cloth: vertices, masses, constraints. Mass in g, length in mm, time in s.
+struct ClothModel {
+  std::vector<Vec3> x_mm;
+  std::vector<double> inv_mass;               ///< #V 1/g
+  std::vector<RestTriangle> triangles;
+  std::vector<BendStencil> bends;
+  std::vector<std::array<int, 2>> edges;      ///< unique undirected edges (self-collision)
+  std::vector<int> vertex_piece;              ///< #V piece of the vertex's first chart
+  double mean_edge_mm = 0;
+};
+
+/// Builds the model of `g` (its 3D positions and its charts' rest shapes). Triangles a seam
+/// collapsed are left out. Bending across an edge inside a piece rests flat; across a seam it
+/// rests at the sewn angle (the seam allowance holds it). Stiffness from `m`.
+ClothModel build_cloth_model(const Garment& g, const ClothMaterial& m);
+
+/// Signed dihedral angle of stencil (a, b, c, d) at `x` (0 when flat) and, if grad is given,
+/// its gradient with respect to a, b, c, d.
+double dihedral_angle(const std::vector<Vec3>& x, const BendStencil& s, std::array<Vec3, 4>* grad);
+
+}  // namespace tp::geometry::internal

@@ -1,0 +1,226 @@
+// geometry/sewing/internal/self_collision.cpp: spatial hash broad phase and the point-triangle and
+// edge-edge projections that keep cloth from passing through itself.
+#include "geometry/sewing/internal/self_collision.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+namespace tp::geometry::internal {
+namespace {
+
+// A dense spatial hash (Teschner et al. 2003): entries counted into a fixed table by cell hash.
+class SpatialHash {
+ public:
+  SpatialHash(double cell_mm, size_t entries) : cell_(cell_mm), start_(std::max<size_t>(entries * 2, 1024) + 1, 0) {}
+
+  std::array<int, 3> cell(Vec3 p) const {
+    return {static_cast<int>(std::floor(p.x / cell_)), static_cast<int>(std::floor(p.y / cell_)),
+            static_cast<int>(std::floor(p.z / cell_))};
+  }
+  size_t slot(int i, int j, int k) const {
+    const uint64_t h = (static_cast<uint64_t>(static_cast<uint32_t>(i)) * 92837111u) ^
+                       (static_cast<uint64_t>(static_cast<uint32_t>(j)) * 689287499u) ^
+                       (static_cast<uint64_t>(static_cast<uint32_t>(k)) * 283923481u);
+    return static_cast<size_t>(h % (start_.size() - 1));
+  }
+  // Two passes: count() every entry's cells, then fill() them in the same order.
+  void count(size_t s) { ++start_[s]; }
+  void finish_counts() {
+    size_t sum = 0;
+    for (auto& c : start_) { size_t v = c; c = sum; sum += v; }
+    ids_.assign(sum, 0);
+    fill_ = start_;
+  }
+  void fill(size_t s, int id) { ids_[fill_[s]++] = id; }
+  template <class Fn>
+  void visit(size_t s, Fn&& fn) const {
+    for (size_t k = start_[s]; k < start_[s + 1]; ++k) fn(ids_[k]);
+  }
+
+ private:
+  double cell_;
+  std::vector<size_t> start_, fill_;
+  std::vector<int> ids_;
+};
+
+// Closest point to p on triangle (a, b, c) as barycentric weights (Ericson, Real-Time Collision
+// Detection 5.1.5).
+std::array<double, 3> closest_on_triangle(Vec3 p, Vec3 a, Vec3 b, Vec3 c) {
+  const Vec3 ab = b - a, ac = c - a, ap = p - a;
+  const double d1 = dot(ab, ap), d2 = dot(ac, ap);
+  if (d1 <= 0 && d2 <= 0) return {1, 0, 0};
+  const Vec3 bp = p - b;
+  const double d3 = dot(ab, bp), d4 = dot(ac, bp);
+  if (d3 >= 0 && d4 <= d3) return {0, 1, 0};
+  const double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0) { const double v = d1 / (d1 - d3); return {1 - v, v, 0}; }
+  const Vec3 cp = p - c;
+  const double d5 = dot(ab, cp), d6 = dot(ac, cp);
+  if (d6 >= 0 && d5 <= d6) return {0, 0, 1};
+  const double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0) { const double w = d2 / (d2 - d6); return {1 - w, 0, w}; }
+  const double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) {
+    const double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+    return {0, 1 - w, w};
+  }
+  const double denom = 1 / (va + vb + vc);
+  const double v = vb * denom, w = vc * denom;
+  return {1 - v - w, v, w};
+}
+
+// Closest points of segments p0-p1 and q0-q1 as parameters (s, t) in [0, 1].
+std::array<double, 2> closest_on_segments(Vec3 p0, Vec3 p1, Vec3 q0, Vec3 q1) {
+  const Vec3 d1 = p1 - p0, d2 = q1 - q0, r = p0 - q0;
+  const double a = dot(d1, d1), e = dot(d2, d2), f = dot(d2, r);
+  if (a < 1e-18 || e < 1e-18) return {0, 0};
+  const double c = dot(d1, r), b = dot(d1, d2), denom = a * e - b * b;
+  double s = denom > 1e-12 * a * e ? std::clamp((b * f - c * e) / denom, 0.0, 1.0) : 0.0;
+  double t = (b * s + f) / e;
+  if (t < 0) t = 0, s = std::clamp(-c / a, 0.0, 1.0);
+  else if (t > 1) t = 1, s = std::clamp((b - c) / a, 0.0, 1.0);
+  return {s, t};
+}
+
+Vec3 triangle_normal(const std::vector<Vec3>& x, const RestTriangle& t) {
+  return normalized(cross(x[t.v[1]] - x[t.v[0]], x[t.v[2]] - x[t.v[0]]));
+}
+
+// Visits the hash slots of every cell the box [lo, hi] covers.
+template <class Fn>
+void for_cells(const SpatialHash& h, Vec3 lo, Vec3 hi, Fn&& fn) {
+  const auto a = h.cell(lo), b = h.cell(hi);
+  for (int i = a[0]; i <= b[0]; ++i)
+    for (int j = a[1]; j <= b[1]; ++j)
+      for (int k = a[2]; k <= b[2]; ++k) fn(h.slot(i, j, k));
+}
+
+}  // namespace
+
+SelfCollisionPairs find_self_collision_pairs(const ClothModel& cloth, const std::vector<Vec3>& x, double margin_mm) {
+  SelfCollisionPairs out;
+  const double cell = std::max(cloth.mean_edge_mm, 2 * margin_mm);
+  const Vec3 pad{margin_mm, margin_mm, margin_mm};
+
+  // Point-triangle: vertices hashed by cell, each triangle's padded box looked up.
+  SpatialHash vh(cell, x.size());
+  for (const Vec3& p : x) { auto c = vh.cell(p); vh.count(vh.slot(c[0], c[1], c[2])); }
+  vh.finish_counts();
+  for (size_t i = 0; i < x.size(); ++i) { auto c = vh.cell(x[i]); vh.fill(vh.slot(c[0], c[1], c[2]), static_cast<int>(i)); }
+  // Visited stamps dedupe a query's hits without sorting (the order stays the cells' order).
+  std::vector<int> found, stamp_v(x.size(), -1), stamp_e(cloth.edges.size(), -1);
+  for (size_t f = 0; f < cloth.triangles.size(); ++f) {
+    const RestTriangle& t = cloth.triangles[f];
+    const Vec3 a = x[t.v[0]], b = x[t.v[1]], c = x[t.v[2]];
+    const Vec3 lo{std::min({a.x, b.x, c.x}), std::min({a.y, b.y, c.y}), std::min({a.z, b.z, c.z})};
+    const Vec3 hi{std::max({a.x, b.x, c.x}), std::max({a.y, b.y, c.y}), std::max({a.z, b.z, c.z})};
+    found.clear();
+    for_cells(vh, lo - pad, hi + pad, [&](size_t s) {
+      vh.visit(s, [&](int v) {
+        if (stamp_v[v] != static_cast<int>(f)) stamp_v[v] = static_cast<int>(f), found.push_back(v);
+      });
+    });
+    const Vec3 n = triangle_normal(x, t);
+    const Vec3 plo = lo - pad, phi = hi + pad;
+    for (int v : found) {
+      if (v == t.v[0] || v == t.v[1] || v == t.v[2]) continue;
+      const Vec3 q0 = x[v];
+      if (q0.x < plo.x || q0.y < plo.y || q0.z < plo.z || q0.x > phi.x || q0.y > phi.y || q0.z > phi.z) continue;
+      const auto w = closest_on_triangle(x[v], a, b, c);
+      const Vec3 q = a * w[0] + b * w[1] + c * w[2];
+      if (norm(x[v] - q) >= margin_mm) continue;
+      out.point_triangle.push_back({v, static_cast<int>(f), dot(x[v] - q, n) >= 0 ? 1.0 : -1.0});
+    }
+  }
+
+  // Edge-edge: edges hashed into every cell their padded box covers, then paired per cell.
+  SpatialHash eh(cell, cloth.edges.size() * 4);
+  auto edge_box = [&](const std::array<int, 2>& e, Vec3& lo, Vec3& hi) {
+    const Vec3 p = x[e[0]], q = x[e[1]];
+    lo = Vec3{std::min(p.x, q.x), std::min(p.y, q.y), std::min(p.z, q.z)} - pad * 0.5;
+    hi = Vec3{std::max(p.x, q.x), std::max(p.y, q.y), std::max(p.z, q.z)} + pad * 0.5;
+  };
+  for (const auto& e : cloth.edges) {
+    Vec3 lo, hi;
+    edge_box(e, lo, hi);
+    for_cells(eh, lo, hi, [&](size_t s) { eh.count(s); });
+  }
+  eh.finish_counts();
+  for (size_t k = 0; k < cloth.edges.size(); ++k) {
+    Vec3 lo, hi;
+    edge_box(cloth.edges[k], lo, hi);
+    for_cells(eh, lo, hi, [&](size_t s) { eh.fill(s, static_cast<int>(k)); });
+  }
+  for (size_t k = 0; k < cloth.edges.size(); ++k) {
+    const auto& ea = cloth.edges[k];
+    Vec3 lo, hi;
+    edge_box(ea, lo, hi);
+    found.clear();
+    for_cells(eh, lo, hi, [&](size_t s) {
+      eh.visit(s, [&](int o) {
+        if (o > static_cast<int>(k) && stamp_e[o] != static_cast<int>(k)) stamp_e[o] = static_cast<int>(k), found.push_back(o);
+      });
+    });
+    for (int o : found) {
+      const auto& eb = cloth.edges[o];
+      if (ea[0] == eb[0] || ea[0] == eb[1] || ea[1] == eb[0] || ea[1] == eb[1]) continue;
+      Vec3 olo, ohi;
+      edge_box(eb, olo, ohi);
+      if (olo.x > hi.x || olo.y > hi.y || olo.z > hi.z || ohi.x < lo.x || ohi.y < lo.y || ohi.z < lo.z) continue;
+      const auto st = closest_on_segments(x[ea[0]], x[ea[1]], x[eb[0]], x[eb[1]]);
+      const Vec3 pa = x[ea[0]] * (1 - st[0]) + x[ea[1]] * st[0], pb = x[eb[0]] * (1 - st[1]) + x[eb[1]] * st[1];
+      const double d = norm(pa - pb);
+      if (d >= margin_mm || d < 1e-9) continue;
+      out.edge_edge.push_back({static_cast<int>(k), o, (pa - pb) / d});
+    }
+  }
+  return out;
+}
+
+int resolve_self_collisions(const ClothModel& cloth, const SelfCollisionPairs& pairs, double thickness_mm,
+                            std::vector<Vec3>& x) {
+  const auto& w = cloth.inv_mass;
+  int contacts = 0;
+  for (const PointTrianglePair& pr : pairs.point_triangle) {
+    const RestTriangle& t = cloth.triangles[pr.triangle];
+    const Vec3 a = x[t.v[0]], b = x[t.v[1]], c = x[t.v[2]];
+    const Vec3 n = triangle_normal(x, t);
+    if (dot(n, n) == 0) continue;
+    const auto bc = closest_on_triangle(x[pr.vertex], a, b, c);
+    // Only where the vertex is over the triangle's face; edges are the edge-edge pairs' part.
+    if (bc[0] <= 0 || bc[1] <= 0 || bc[2] <= 0) continue;
+    const Vec3 q = a * bc[0] + b * bc[1] + c * bc[2];
+    const double dist = dot(x[pr.vertex] - q, n) * pr.side;
+    if (dist >= thickness_mm) continue;
+    ++contacts;
+    const Vec3 dir = n * pr.side;
+    const double wsum = w[pr.vertex] + w[t.v[0]] * bc[0] * bc[0] + w[t.v[1]] * bc[1] * bc[1] + w[t.v[2]] * bc[2] * bc[2];
+    if (wsum <= 0) continue;
+    const double lambda = (thickness_mm - dist) / wsum;
+    x[pr.vertex] += dir * (w[pr.vertex] * lambda);
+    for (int k = 0; k < 3; ++k) x[t.v[k]] -= dir * (w[t.v[k]] * bc[k] * lambda);
+  }
+  for (const EdgeEdgePair& pr : pairs.edge_edge) {
+    const auto& ea = cloth.edges[pr.edge_a];
+    const auto& eb = cloth.edges[pr.edge_b];
+    const auto st = closest_on_segments(x[ea[0]], x[ea[1]], x[eb[0]], x[eb[1]]);
+    // Interior crossings only: endpoints against faces are the point-triangle pairs' part.
+    if (st[0] <= 0 || st[0] >= 1 || st[1] <= 0 || st[1] >= 1) continue;
+    const Vec3 pa = x[ea[0]] * (1 - st[0]) + x[ea[1]] * st[0], pb = x[eb[0]] * (1 - st[1]) + x[eb[1]] * st[1];
+    const double dist = dot(pa - pb, pr.separation);
+    if (dist >= thickness_mm) continue;
+    ++contacts;
+    const double wa0 = w[ea[0]] * (1 - st[0]), wa1 = w[ea[1]] * st[0], wb0 = w[eb[0]] * (1 - st[1]), wb1 = w[eb[1]] * st[1];
+    const double wsum = wa0 * (1 - st[0]) + wa1 * st[0] + wb0 * (1 - st[1]) + wb1 * st[1];
+    if (wsum <= 0) continue;
+    const double lambda = (thickness_mm - dist) / wsum;
+    x[ea[0]] += pr.separation * (wa0 * lambda);
+    x[ea[1]] += pr.separation * (wa1 * lambda);
+    x[eb[0]] -= pr.separation * (wb0 * lambda);
+    x[eb[1]] -= pr.separation * (wb1 * lambda);
+  }
+  return contacts;
+}
+
+}  // namespace tp::geometry::internal

@@ -1,0 +1,42 @@
+// geometry/sewing/internal/self_collision.h: cloth self-collision: a spatial hash finds
+// point-triangle and edge-edge pairs near each other, and a projection keeps them apart.
+#pragma once
+
+#include <array>
+#include <vector>
+
+#include "geometry/common/vec.h"
+#include "geometry/sewing/internal/cloth_model.h"
+
+namespace tp::geometry::internal {
+
+/// A vertex near a triangle, and the side of the triangle it was on when found.
+struct PointTrianglePair {
+  int vertex = 0;
+  int triangle = 0;
+  double side = 1;  ///< +1 on the normal's side, -1 behind
+};
+
+/// Two edges near each other, and the direction from the second to the first when found.
+struct EdgeEdgePair {
+  int edge_a = 0, edge_b = 0;
+  Vec3 separation;  ///< unit
+};
+
+/// Candidate pairs of one broad phase.
+struct SelfCollisionPairs {
+  std::vector<PointTrianglePair> point_triangle;
+  std::vector<EdgeEdgePair> edge_edge;
+};
+
+/// Every vertex-triangle and edge-edge pair (sharing no vertex) closer than `margin_mm` at `x`,
+/// found through a spatial hash of cell size about the mean edge, in a fixed order.
+SelfCollisionPairs find_self_collision_pairs(const ClothModel& cloth, const std::vector<Vec3>& x, double margin_mm);
+
+/// Pushes every candidate pair found closer than `thickness_mm` (or on the other side than it
+/// was found on) apart to `thickness_mm`, moving the vertices in proportion to their inverse
+/// masses (Gauss-Seidel, in the pairs' order). Returns how many pairs were in contact.
+int resolve_self_collisions(const ClothModel& cloth, const SelfCollisionPairs& pairs, double thickness_mm,
+                            std::vector<Vec3>& x);
+
+}  // namespace tp::geometry::internal

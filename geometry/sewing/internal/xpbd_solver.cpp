@@ -1,0 +1,193 @@
+// geometry/sewing/internal/xpbd_solver.cpp: XPBD cloth stepping (Macklin et al. 2016 and 2019,
+// "XPBD" and "Small steps in physics simulation"), constraints projected Gauss-Seidel in a fixed
+// order so a run is bit-for-bit repeatable.
+#include "geometry/sewing/internal/xpbd_solver.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <cmath>
+#include <numbers>
+#include <thread>
+
+#include "geometry/sewing/internal/self_collision.h"
+
+namespace tp::geometry::internal {
+namespace {
+
+// Runs fn(begin, end) over [0, n) on `threads` threads; fn must only touch its own range.
+template <class Fn>
+void parallel_ranges(int n, int threads, Fn&& fn) {
+  threads = std::clamp(threads, 1, 8);
+  if (threads == 1 || n < 512) { fn(0, n); return; }
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t)
+    pool.emplace_back([&, t] { fn(static_cast<int>(static_cast<long>(n) * t / threads),
+                                  static_cast<int>(static_cast<long>(n) * (t + 1) / threads)); });
+  fn(0, static_cast<int>(static_cast<long>(n) / threads));
+  for (auto& th : pool) th.join();
+}
+
+double wrap_angle(double a) {
+  while (a > std::numbers::pi) a -= 2 * std::numbers::pi;
+  while (a < -std::numbers::pi) a += 2 * std::numbers::pi;
+  return a;
+}
+
+// One XPBD bending projection (lambda starts at 0 every substep: one iteration per substep).
+void project_bend(const BendStencil& s, const std::vector<double>& w, double dt2, std::vector<Vec3>& x) {
+  std::array<Vec3, 4> g;
+  const double angle = dihedral_angle(x, s, &g);
+  const double c = wrap_angle(angle - s.rest_angle);
+  const int id[4] = {s.a, s.b, s.c, s.d};
+  double denom = s.compliance / dt2;
+  for (int k = 0; k < 4; ++k) denom += w[id[k]] * dot(g[k], g[k]);
+  if (denom <= 0) return;
+  const double lambda = -c / denom;
+  for (int k = 0; k < 4; ++k) x[id[k]] += g[k] * (w[id[k]] * lambda);
+}
+
+}  // namespace
+
+void project_triangle(const RestTriangle& t, const std::vector<double>& w, double limit, double stiffness,
+                      std::vector<Vec3>& x) {
+  const Vec3 x0 = x[t.v[0]], x1 = x[t.v[1]], x2 = x[t.v[2]];
+  const Vec3 d1 = x1 - x0, d2 = x2 - x0;
+  // F = [d1 d2] Dm^-1, columns f0 and f1.
+  const Vec3 f0 = d1 * t.dm_inv[0][0] + d2 * t.dm_inv[1][0];
+  const Vec3 f1 = d1 * t.dm_inv[0][1] + d2 * t.dm_inv[1][1];
+  // Singular values and right vectors from the eigen-decomposition of F^T F.
+  const double a = dot(f0, f0), b = dot(f0, f1), d = dot(f1, f1);
+  const double tr = a + d, det = a * d - b * b;
+  const double disc = std::sqrt(std::max(tr * tr / 4 - det, 0.0));
+  const double l1 = tr / 2 + disc, l2 = std::max(tr / 2 - disc, 0.0);
+  if (l1 < 1e-20) return;
+  const Vec2 v1 = std::abs(b) > 1e-30 ? normalized(Vec2{b, l1 - a}) : (a >= d ? Vec2{1, 0} : Vec2{0, 1});
+  const Vec2 v2 = perp(v1);
+  const double s1 = std::sqrt(l1), s2 = std::sqrt(l2);
+  const Vec3 u1 = (f0 * v1.x + f1 * v1.y) / s1;
+  Vec3 u2 = s2 > 1e-9 * s1 ? (f0 * v2.x + f1 * v2.y) / s2 : Vec3{};
+  if (s2 <= 1e-9 * s1) {
+    // A collapsed triangle: any direction orthogonal to the stretched one.
+    const Vec3 o = std::abs(u1.x) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
+    u2 = normalized(cross(cross(u1, o), u1));
+  }
+  // Target stretches: inside the limit, pulled towards rest by the stiffness.
+  auto target = [&](double sv) {
+    const double clamped = std::clamp(sv, 1 - limit, 1 + limit);
+    return clamped + stiffness * (1 - clamped);
+  };
+  const double t1 = target(s1), t2 = target(s2);
+  if (t1 == s1 && t2 == s2) return;
+  // Target gradient U diag(t) V^T applied to the rest corners around the current centroid.
+  const Vec3 g0 = u1 * (t1 * v1.x) + u2 * (t2 * v2.x);
+  const Vec3 g1 = u1 * (t1 * v1.y) + u2 * (t2 * v2.y);
+  // The rest shape placed at the corners' centre of mass (current and rest alike), so the
+  // triangle's momentum is kept and no corner overshoots its goal.
+  if (w[t.v[0]] <= 0 || w[t.v[1]] <= 0 || w[t.v[2]] <= 0) return;
+  const double m0 = 1 / w[t.v[0]], m1 = 1 / w[t.v[1]], m2 = 1 / w[t.v[2]], msum = m0 + m1 + m2;
+  const Vec3 c = (x0 * m0 + x1 * m1 + x2 * m2) / msum;
+  const Vec2 rc = (t.rest_mm[0] * m0 + t.rest_mm[1] * m1 + t.rest_mm[2] * m2) / msum;
+  for (int k = 0; k < 3; ++k) {
+    const Vec2 r = t.rest_mm[k] - rc;
+    x[t.v[k]] = c + g0 * r.x + g1 * r.y;
+  }
+}
+
+Result<XpbdStats> run_xpbd(ClothModel& cloth, const BodySdf& body, const XpbdParams& p, const CancelToken* cancel) {
+  XpbdStats st;
+  std::vector<Vec3>& x = cloth.x_mm;
+  const int n = static_cast<int>(x.size());
+  if (n == 0) return st;
+  const double dt = p.substep_s, dt2 = dt * dt;
+  const double decay = std::exp(-p.damping_per_s * dt);
+  const int total = static_cast<int>(std::ceil(p.duration_s / dt));
+  const int broad_every = std::max(p.substeps_per_broad_phase, 1);
+  // Per-substep travel budget: inertial motion is clamped to it and any move (constraints
+  // included) to twice it, so pairs farther apart than `margin` at a broad phase cannot touch
+  // before the next one. It follows the cloth's speed (1.5 x the fastest vertex's last substep),
+  // at most max_move, so a settling garment has few candidate pairs.
+  double budget = p.max_move_mm;
+  double last_move = p.max_move_mm;
+  std::vector<Vec3> v(n, Vec3{}), prev(n);
+  std::vector<uint8_t> touching(n, 0);
+  std::vector<Vec3> normal(n);
+  std::vector<double> depth(n);
+  SelfCollisionPairs pairs;
+
+  for (int step = 0; step < total; ++step) {
+    if (cancel && cancel->cancelled()) return fail(ErrorCode::kCancelled, "draping cancelled");
+    if (step % broad_every == 0) {
+      budget = std::clamp(1.5 * last_move + 0.05, 0.05, p.max_move_mm);
+      pairs = find_self_collision_pairs(cloth, x, p.self_thickness_mm + 2 * broad_every * 2 * budget);
+      st.self_pairs = static_cast<int>(pairs.point_triangle.size() + pairs.edge_edge.size());
+    }
+    // Predict: gravity and damping on the velocities, positions advanced.
+    prev = x;
+    for (int i = 0; i < n; ++i) {
+      if (cloth.inv_mass[i] == 0) continue;
+      v[i].y -= p.gravity_mm_s2 * dt;
+      v[i] = v[i] * decay;
+      const double speed = norm(v[i]);
+      if (speed * dt > budget) v[i] = v[i] * (budget / (speed * dt));
+      x[i] += v[i] * dt;
+    }
+    // Membrane, then bending, in their fixed order.
+    for (int pass = 0; pass < p.stretch_passes; ++pass)
+      for (const RestTriangle& t : cloth.triangles) project_triangle(t, cloth.inv_mass, p.stretch_limit, p.stretch_stiffness, x);
+    for (const BendStencil& s : cloth.bends) project_bend(s, cloth.inv_mass, dt2, x);
+    // No vertex travels further than twice the budget in a substep: pairs cannot tunnel.
+    for (int i = 0; i < n; ++i) {
+      const Vec3 d = x[i] - prev[i];
+      const double len = norm(d);
+      if (len > 2 * budget) x[i] = prev[i] + d * (2 * budget / len);
+    }
+    st.self_contacts = resolve_self_collisions(cloth, pairs, p.self_thickness_mm, x);
+    // Body contact with Coulomb friction (Macklin et al. 2014): the tangential motion of a
+    // touching vertex is cancelled up to friction x penetration.
+    parallel_ranges(n, p.threads, [&](int b, int e) {
+      for (int i = b; i < e; ++i) {
+        touching[i] = 0;
+        if (body.approx_distance_mm(x[i]) > p.body_thickness_mm + 0.4 * body.spacing_mm()) continue;
+        const BodySdf::Hit h = body.query(x[i]);
+        if (!h.near || h.distance_mm >= p.body_thickness_mm) {
+          if (!h.near && h.distance_mm < 0) x[i] = prev[i];  // deeper than the band: undo the substep
+          continue;
+        }
+        touching[i] = 1;
+        depth[i] = p.body_thickness_mm - h.distance_mm;
+        normal[i] = h.normal;
+        x[i] = h.closest_mm + h.normal * p.body_thickness_mm;
+      }
+    });
+    int contacts = 0;
+    for (int i = 0; i < n; ++i) {
+      if (!touching[i]) continue;
+      ++contacts;
+      const Vec3 moved = x[i] - prev[i];
+      const Vec3 tangential = moved - normal[i] * dot(moved, normal[i]);
+      const double tl = norm(tangential);
+      const double hold = p.friction * depth[i];
+      x[i] -= tl <= hold ? tangential : tangential * (hold / tl);
+    }
+    st.body_contacts = contacts;
+    // Velocities from the positions.
+    double vmax = 0;
+    int moving = 0;
+    for (int i = 0; i < n; ++i) {
+      v[i] = (x[i] - prev[i]) / dt;
+      const double v2 = dot(v[i], v[i]);
+      vmax = std::max(vmax, v2);
+      moving += v2 > p.settle_speed_mm_s * p.settle_speed_mm_s;
+    }
+    st.max_speed_mm_s = std::sqrt(vmax);
+    last_move = st.max_speed_mm_s * dt;
+    st.substeps = step + 1;
+    st.simulated_s = st.substeps * dt;
+    if (!std::isfinite(st.max_speed_mm_s)) return fail(ErrorCode::kSewing, "cloth drape diverged");
+    // Settled: all but 0.5 % of the vertices slower than the settle speed.
+    if (st.simulated_s >= 0.3 && moving <= n / 200) break;
+  }
+  return st;
+}
+
+}  // namespace tp::geometry::internal

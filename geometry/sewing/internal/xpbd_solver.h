@@ -1,0 +1,53 @@
+// geometry/sewing/internal/xpbd_solver.h: the XPBD cloth time stepper (small steps, one
+// constraint pass per substep): strain-limited stretch and shear per triangle, dihedral bending,
+// self-collision, body contact with friction, gravity and damping.
+#pragma once
+
+#include "geometry/body/body_sdf.h"
+#include "geometry/common/cancel.h"
+#include "geometry/common/error.h"
+#include "geometry/sewing/internal/cloth_model.h"
+
+namespace tp::geometry::internal {
+
+/// Settings of one run. Length mm, time s.
+struct XpbdParams {
+  double duration_s = 1.0;           ///< simulated time limit
+  double substep_s = 1.0 / 400;      ///< substep length
+  int substeps_per_broad_phase = 8;  ///< self-collision pairs are searched again this often
+  double gravity_mm_s2 = 9810;       ///< along -y
+  double damping_per_s = 4;          ///< velocity decays as exp(-damping t)
+  double body_thickness_mm = 3;      ///< vertices stay this far out of the body
+  double self_thickness_mm = 2;      ///< cloth layers stay this far apart
+  /// No vertex moves further in one substep (below the self thickness, so nothing tunnels).
+  double max_move_mm = 0.5;
+  int stretch_passes = 4;            ///< stretch/shear projections per substep (Gauss-Seidel passes)
+  double stretch_limit = 0.03;
+  double stretch_stiffness = 1.0;
+  double friction = 0.4;
+  double settle_speed_mm_s = 4;      ///< stop early once 99.5 % of the vertices are slower (after 0.3 s)
+  int threads = 2;                   ///< body queries only; results do not depend on it
+};
+
+/// What a run did.
+struct XpbdStats {
+  int substeps = 0;
+  double simulated_s = 0;
+  double max_speed_mm_s = 0;    ///< at the end
+  int body_contacts = 0;        ///< vertices touching the body in the last substep
+  int self_contacts = 0;        ///< pairs held apart in the last substep
+  int self_pairs = 0;           ///< candidate pairs of the last broad phase
+};
+
+/// Steps `cloth` (positions updated in place, starting at rest) under `p` on `body`.
+/// Deterministic: constraints run in a fixed order on one thread; body queries are per vertex.
+/// Fails with kSewing if positions stop being finite, kCancelled when `cancel` fires.
+[[nodiscard]] Result<XpbdStats> run_xpbd(ClothModel& cloth, const BodySdf& body, const XpbdParams& p,
+                                         const CancelToken* cancel);
+
+/// One stretch/shear projection of triangle `t` (public for tests): the deformation gradient's
+/// principal stretches are clamped to [1 - limit, 1 + limit] and pulled towards 1 by `stiffness`.
+void project_triangle(const RestTriangle& t, const std::vector<double>& inv_mass, double limit, double stiffness,
+                      std::vector<Vec3>& x);
+
+}  // namespace tp::geometry::internal
