@@ -38,6 +38,9 @@ struct RunOptions {
   std::int64_t job_id = 0;
   std::function<void(Stage, StageState, double seconds)> on_stage;
   std::function<void(std::int64_t swath)> on_checkpoint;
+  /// Progress within a stage, where the stage can tell: `fraction` 0..1 of its work done and a
+  /// short `detail` ("swath 12 of 40"). Called on the pipeline's thread; keep it quick.
+  std::function<void(Stage, double fraction, const std::string& detail)> on_progress;
 };
 
 /// Runs every stage of `job`. Always writes `<out_dir>/report.json` (stages, timings, figures,
