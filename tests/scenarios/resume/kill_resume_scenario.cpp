@@ -77,7 +77,7 @@ class PrintRoom {
                                         "while :; do\n"
                                         "  sh -c 'echo $$ > \"$0/printd.pid\"; exec \"$1\" --state-dir \"$0/state\" "
                                         "--hot-folder \"$0/hot\" --out \"$0/out\" --printer sim --poll-ms 100 "
-                                        "--max-crashes 2' "
+                                        "--max-crashes 2 --listen 127.0.0.1:0' "
                                         "\"$1\" \"$2\" >> \"$1/printd.log\" 2>&1\n"
                                         "  [ -e \"$1/stop\" ] && exit 0\n"
                                         "  sleep 0.2\n"
