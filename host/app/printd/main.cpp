@@ -44,6 +44,7 @@ int main(int argc, char** argv) {
                  "failed, not resumed again")->capture_default_str()->check(CLI::Range(0, 1000));
   app.set_config("--config", "/etc/printd/printd.conf",
                  "Config file: one `option = value` line per long option (docs/daemon.md); absent is fine");
+  app.allow_config_extras(CLI::config_extras_mode::error);  // a misspelt key must not pass unseen
   app.add_option("--listen", cfg.http.listen,
                  "HTTP API address host:port, or 'off'; beyond loopback needs --tls-cert/--tls-key and tokens")
       ->capture_default_str();
