@@ -18,6 +18,8 @@ TP_PACKAGES=(
   python3
   clang libclang-rt-14-dev
   python3-ezdxf python3-jsonschema pngcheck librsvg2-bin libtiff-tools
+  libcpp-httplib-dev libssl-dev openssl  # printd's HTTP API (TLS via OpenSSL); the tests make a cert
+  systemd dpkg-dev wrk  # systemd-analyze verify and dpkg-shlibdeps for the .deb test; HTTP load figures
 )
 
 tp_log() { printf '\033[1m==> %s\033[0m\n' "$*" >&2; }
