@@ -9,6 +9,7 @@
 #include <zip.h>
 
 #include <chrono>
+#include <csignal>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <regex>
@@ -252,6 +253,7 @@ TEST(HttpApi, JobsFilesAndEventsEndToEnd) {
 }
 
 TEST(HttpApi, UploadsAreCheckedAsPackages) {
+  std::signal(SIGPIPE, SIG_IGN);  // a refused upload closes the connection under the client's write
   Printd d(scratch_dir("http-upload"));
   ASSERT_TRUE(d.start({"--http-max-upload-mb", "1"})) << d.log();
   auto c = d.client();
@@ -287,7 +289,10 @@ TEST(HttpApi, UploadsAreCheckedAsPackages) {
 
   // Not a zip, too large, wrong type.
   EXPECT_EQ(c.Post("/api/v1/jobs", "not a zip", "application/zip")->status, 422);
-  EXPECT_EQ(c.Post("/api/v1/jobs", std::string(2u << 20, 'x'), "application/zip")->status, 413);
+  // Too large: answered 413 from the Content-Length before the body is read, and the connection
+  // closed, so the client may see its write fail instead of the answer.
+  auto big = c.Post("/api/v1/jobs", std::string(2u << 20, 'x'), "application/zip");
+  EXPECT_TRUE(!big || big->status == 413) << (big ? big->body : httplib::to_string(big.error()));
   EXPECT_EQ(c.Post("/api/v1/jobs", "{}", "application/json")->status, 415);
   // Nothing of the uploads is left behind.
   std::error_code ec;
