@@ -17,6 +17,7 @@
 #include "host/daemon/hot_folder.h"
 #include "host/daemon/intake.h"
 #include "host/daemon/requests/request_handler.h"
+#include "host/pipeline/printer_model.h"
 #include "host/pipeline/run_job.h"
 #include "host/store/job_store.h"
 
@@ -137,6 +138,8 @@ class Daemon {
                 {"job_id", running_id_},
                 {"stage", running_stage_},
                 {"last_acked_swath", running_swath_},
+                {"model", printer_model_},
+                {"ieee1284_id", printer_ieee1284_},
                 {"counters", {{"jobs_run", jobs_run_}, {"swaths_acked", swaths_acked_}}},
                 {"last_event", events_.last_seq()}};
   }
@@ -320,6 +323,13 @@ class Daemon {
     } else if (auto st = reserve_report(rec.out_dir, rec.name, rec.id); !st) {
       result = std::unexpected(st.error());
     } else {
+      // The printer this job is planned for; the print stage checks the device's own ID against it.
+      {
+        auto m = job_printer_model(*job);
+        std::lock_guard lock(mu_);
+        printer_model_ = m ? m->name : std::string();
+        printer_ieee1284_ = m ? m->ieee1284_id : std::string();
+      }
       RunOptions opt;
       opt.out_dir = rec.out_dir;
       opt.printer_override = cfg_.printer_override;
@@ -414,6 +424,8 @@ class Daemon {
   std::int64_t running_id_ = 0;
   std::optional<geometry::CancelToken> running_cancel_;
   std::string running_stage_;
+  std::string printer_model_;      ///< of the last job run (job_printer_model)
+  std::string printer_ieee1284_;
   std::int64_t running_swath_ = -1;
   std::int64_t jobs_run_ = 0;
   std::int64_t swaths_acked_ = 0;

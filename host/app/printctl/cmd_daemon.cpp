@@ -89,25 +89,28 @@ void register_daemon_commands(CLI::App& app) {
     ProgressView view(stderr, ::isatty(2) != 0);
     std::uint64_t after = 0;
     bool events = true;
-    for (;;) {
-      if (events) {
-        auto reply = socket_request(args.socket_path(),
-                                    dump_json(json{{"op", "events"}, {"after", after}, {"job", id}, {"wait_ms", 500}}));
-        json e = reply ? json::parse(*reply, nullptr, false) : json();
-        if (!e.is_object() || !e.value("ok", false)) {
-          events = false;  // an older printd: status polling only
-        } else {
-          after = e.value("last", after);
-          for (const json& ev : e["events"]) {
-            if (ev.value("type", "") != "progress" || ev.value("job_id", 0LL) != id) continue;
-            const std::string stage = ev.value("stage", ""), st = ev.value("state", "");
-            if (ev.contains("detail")) view.progress(stage, ev.value("fraction", 0.0), ev.value("detail", ""));
-            else view.stage(stage, st, ev.value("seconds", 0.0));
-          }
-        }
+    const auto pump = [&](int wait_ms) {
+      if (!events) return;
+      auto reply = socket_request(
+          args.socket_path(), dump_json(json{{"op", "events"}, {"after", after}, {"job", id}, {"wait_ms", wait_ms}}));
+      json e = reply ? json::parse(*reply, nullptr, false) : json();
+      if (!e.is_object() || !e.value("ok", false)) {
+        events = false;  // an older printd: status polling only
+        return;
       }
+      after = e.value("last", after);
+      for (const json& ev : e["events"]) {
+        if (ev.value("type", "") != "progress" || ev.value("job_id", 0LL) != id) continue;
+        const std::string stage = ev.value("stage", ""), st = ev.value("state", "");
+        if (ev.contains("detail")) view.progress(stage, ev.value("fraction", 0.0), ev.value("detail", ""));
+        else view.stage(stage, st, ev.value("seconds", 0.0));
+      }
+    };
+    for (;;) {
+      pump(500);
       json s = request(args, {{"op", "status"}, {"id", id}})["job"];
       const std::string state = s.value("state", "");
+      if (state == "done" || state == "failed" || state == "cancelled") pump(0);  // the last stages' events
       if (state == "done") {
         std::printf("job %lld done: %s\n", id, s.value("out_dir", std::string()).c_str());
         return;

@@ -204,6 +204,11 @@ TEST(HttpApi, JobsFilesAndEventsEndToEnd) {
   EXPECT_EQ(job["stages"].size(), 8u);
   EXPECT_TRUE(job["report"].contains("estimate")) << job.dump();
 
+  // The printer now names the model the job ran on and its IEEE 1284 ID.
+  json printer = json::parse(c.Get("/api/v1/printer")->body);
+  EXPECT_NE(printer.value("ieee1284_id", "").find("CMD:TPWP;"), std::string::npos) << printer.dump();
+  EXPECT_EQ(printer["counters"]["jobs_run"], 1);
+
   // Its files, and nothing but them.
   auto list = c.Get("/api/v1/jobs/" + std::to_string(id) + "/files");
   ASSERT_TRUE(list);
@@ -297,6 +302,18 @@ TEST(HttpApi, UploadsAreCheckedAsPackages) {
   // Nothing of the uploads is left behind.
   std::error_code ec;
   EXPECT_TRUE(fs::is_empty(d.root() / "state" / "uploads", ec));
+}
+
+// printctl submit --wait draws the same progress the events carry: plain lines when its output is
+// not a terminal, one per stage change.
+TEST(HttpApi, SubmitWaitShowsTheStagesFromTheEvents) {
+  Printd d(scratch_dir("http-wait"));
+  ASSERT_TRUE(d.start()) << d.log();
+  auto r = run_command({(bin_dir() / "printctl").string(), "submit", example("shirt-front-flat").string(), "--wait",
+                        "--state-dir", (d.root() / "state").string()});
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  for (const char* line : {"queued job 1", "design: running", "marker: done", "print: running", "job 1 done"})
+    EXPECT_NE(r.output.find(line), std::string::npos) << line << " not in:\n" << r.output;
 }
 
 TEST(HttpApi, TokensGuardTheApiWithAReadOnlyScope) {
