@@ -2,8 +2,11 @@
 // every route of docs/api.yaml, uploads as zip and multipart, the 422 validation list, paging,
 // files without escapes, events with Last-Event-ID replay, tokens, TLS and the upload caps.
 #include <gtest/gtest.h>
+#include <arpa/inet.h>
 #include <httplib.h>
+#include <netinet/in.h>
 #include <signal.h>
+#include <sys/socket.h>
 #include <sys/wait.h>
 #include <unistd.h>
 #include <zip.h>
@@ -314,6 +317,48 @@ TEST(HttpApi, SubmitWaitShowsTheStagesFromTheEvents) {
   ASSERT_EQ(r.exit_code, 0) << r.output;
   for (const char* line : {"queued job 1", "design: running", "marker: done", "print: running", "job 1 done"})
     EXPECT_NE(r.output.find(line), std::string::npos) << line << " not in:\n" << r.output;
+}
+
+// Slow clients hold only their own threads: 20 connections that send half a request line and an
+// event stream nobody reads do not stop others being answered, and the half-sent ones are dropped
+// at --http-timeout-ms.
+TEST(HttpApi, SlowClientsStallNobody) {
+  std::signal(SIGPIPE, SIG_IGN);
+  Printd d(scratch_dir("http-slow"));
+  ASSERT_TRUE(d.start({"--http-timeout-ms", "1000"})) << d.log();
+  std::vector<int> slow;
+  for (int i = 0; i < 20; ++i) {
+    const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+    sockaddr_in a{};
+    a.sin_family = AF_INET;
+    a.sin_port = htons(static_cast<std::uint16_t>(d.port()));
+    a.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    ASSERT_EQ(::connect(fd, reinterpret_cast<sockaddr*>(&a), sizeof a), 0);
+    const std::string half = i % 2 ? "GET /api/v1/jo" : "GET /api/v1/events HTTP/1.1\r\nHost: x\r\n\r\n";
+    ASSERT_EQ(::send(fd, half.data(), half.size(), 0), static_cast<ssize_t>(half.size()));
+    slow.push_back(fd);  // never read from
+  }
+  auto c = d.client();
+  for (int i = 0; i < 20; ++i) {
+    const auto t0 = std::chrono::steady_clock::now();
+    auto r = c.Get("/api/v1/jobs");
+    ASSERT_TRUE(r);
+    EXPECT_EQ(r->status, 200);
+    EXPECT_LT(std::chrono::steady_clock::now() - t0, 1s) << "a request waited behind the slow clients";
+  }
+  // The half-sent requests are closed by the daemon after the timeout.
+  std::this_thread::sleep_for(2500ms);
+  int closed = 0;
+  for (size_t i = 1; i < slow.size(); i += 2) {
+    char buf[256];
+    timeval tv{0, 200000};
+    ::setsockopt(slow[i], SOL_SOCKET, SO_RCVTIMEO, &tv, sizeof tv);
+    ssize_t n;
+    while ((n = ::recv(slow[i], buf, sizeof buf, 0)) > 0) {}
+    if (n == 0) ++closed;
+  }
+  EXPECT_EQ(closed, 10);
+  for (int fd : slow) ::close(fd);
 }
 
 TEST(HttpApi, TokensGuardTheApiWithAReadOnlyScope) {
