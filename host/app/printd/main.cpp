@@ -18,7 +18,7 @@ void on_signal(int) { g_stop.store(true); }
 
 int main(int argc, char** argv) {
   tp::rip::keep_memory_flat();  // peak memory must not grow with roll length
-  CLI::App app{"printd: garment print daemon (hot folder, local socket, SQLite job queue)"};
+  CLI::App app{"printd: garment print daemon (hot folder, local socket, HTTP API, SQLite job queue)"};
   tp::host::DaemonConfig cfg;
   std::string state_dir = "/var/lib/printd", hot, out = "/var/lib/printd/out", socket;
   app.add_option("--state-dir", state_dir, "Job database, spool and socket")->capture_default_str();
