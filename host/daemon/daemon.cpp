@@ -16,6 +16,7 @@
 #include "host/daemon/events/event_log.h"
 #include "host/daemon/hot_folder.h"
 #include "host/daemon/intake.h"
+#include "host/daemon/printer_view.h"
 #include "host/daemon/requests/request_handler.h"
 #include "host/pipeline/printer_model.h"
 #include "host/pipeline/run_job.h"
@@ -141,7 +142,8 @@ class Daemon {
                 {"model", printer_model_},
                 {"ieee1284_id", printer_ieee1284_},
                 {"counters", {{"jobs_run", jobs_run_}, {"swaths_acked", swaths_acked_}}},
-                {"last_event", events_.last_seq()}};
+                {"last_event", events_.last_seq()},
+                {"device", printer_view_.snapshot()}};
   }
 
   // A job that was running when printd died: failed if printd crashed on it, else resumed.
@@ -356,6 +358,10 @@ class Daemon {
         events_.publish("progress", rec.id, json{{"stage", std::string(to_string(s))}, {"state", "running"},
                                                  {"fraction", fraction}, {"detail", detail}});
       };
+      // The live printer: served by GET /api/v1/printer, and a `printer` event on each change.
+      opt.on_printer = [&](const PrinterLive& live) {
+        if (auto data = printer_view_.update(live)) events_.publish("printer", rec.id, std::move(*data));
+      };
       opt.on_checkpoint = [&](std::int64_t swath) {
         (void)store.set_checkpoint(rec.id, swath);
         {
@@ -430,6 +436,7 @@ class Daemon {
   std::int64_t jobs_run_ = 0;
   std::int64_t swaths_acked_ = 0;
   EventLog events_;
+  PrinterView printer_view_;
 };
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include "geometry/common/cancel.h"
 #include "host/common/error.h"
 #include "host/job/job.h"
+#include "host/pipeline/printer_live.h"
 
 namespace tp::host {
 
@@ -41,6 +42,9 @@ struct RunOptions {
   /// Progress within a stage, where the stage can tell: `fraction` 0..1 of its work done and a
   /// short `detail` ("swath 12 of 40"). Called on the pipeline's thread; keep it quick.
   std::function<void(Stage, double fraction, const std::string& detail)> on_progress;
+  /// The live printer while the print stage runs: each status report and each fired cue. Called on
+  /// the pipeline's thread; keep it quick.
+  std::function<void(const PrinterLive&)> on_printer;
 };
 
 /// Runs every stage of `job`. Always writes `<out_dir>/report.json` (stages, timings, figures,

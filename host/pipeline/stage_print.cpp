@@ -160,6 +160,16 @@ Status stage_print(PipelineState& ps) {
     session->on_swath_printed([&](std::uint32_t index, std::int64_t) {
       if (ps.options.on_checkpoint) ps.options.on_checkpoint(index);
     });
+    if (ps.options.on_printer) {
+      PrintSession* live = session.get();
+      session->on_status([&ps, live](const device::StatusMsg& st) {
+        ps.options.on_printer(PrinterLive{live->printer(), st, std::nullopt});
+      });
+      session->on_cue_fired([&ps, live](const CueRecord& cue) {
+        const device::StatusMsg* st = live->printer_status();
+        ps.options.on_printer(PrinterLive{live->printer(), st ? *st : device::StatusMsg{}, cue});
+      });
+    }
     JobStart start;
     start.job_id = static_cast<std::uint64_t>(ps.options.job_id);
     start.name = ps.job.name;
