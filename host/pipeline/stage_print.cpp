@@ -192,7 +192,18 @@ Status stage_print(PipelineState& ps) {
                        st.error().message);
     return {};
   };
-  auto stats = rip::rip_marker(ps.roll, *ps.renderer, *model, settings, sink, {}, ps.cancel);
+  // Progress: with a printer the print stage counts acknowledged swaths (run_job's checkpoint);
+  // without one the RIP's bands are the stage's work.
+  rip::ProgressCallback rip_progress;
+  if (!session && ps.options.on_progress)
+    rip_progress = [&ps](const rip::RipProgress& p) {
+      if (p.rows_total <= 0) return;
+      const double fraction = std::min(1.0, static_cast<double>(p.rows_done) / static_cast<double>(p.rows_total));
+      ps.options.on_progress(Stage::kPrint, fraction,
+                             "rip band " + std::to_string(p.band) + ": rows " + std::to_string(p.rows_done) + " of " +
+                                 std::to_string(p.rows_total));
+    };
+  auto stats = rip::rip_marker(ps.roll, *ps.renderer, *model, settings, sink, rip_progress, ps.cancel);
   if (!stats) {
     if (session) (void)session->abort_job(stats.error().message);
     bool cancelled = stats.error().code == rip::ErrorCode::kCancelled || ps.cancel.cancelled();
