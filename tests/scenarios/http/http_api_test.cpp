@@ -11,6 +11,7 @@
 #include <unistd.h>
 #include <zip.h>
 
+#include <algorithm>
 #include <chrono>
 #include <csignal>
 #include <fstream>
@@ -187,6 +188,16 @@ TEST(HttpApi, JobsFilesAndEventsEndToEnd) {
   bool print_progress = false;
   for (const auto& e : seen) print_progress = print_progress || (e["type"] == "progress" && e["stage"] == "print");
   EXPECT_TRUE(print_progress);
+  // Within a stage: the RIP's bands (no printer: the print stage's work) and the nester's time
+  // budget (the example's 4 s) give fractions between 0 and 1, rising.
+  for (const std::string stage : {"print", "marker"}) {
+    std::vector<double> inner;
+    for (const auto& e : seen)
+      if (e["type"] == "progress" && e["stage"] == stage && e.contains("detail")) inner.push_back(e["fraction"]);
+    ASSERT_FALSE(inner.empty()) << stage;
+    EXPECT_TRUE(std::any_of(inner.begin(), inner.end(), [](double f) { return f > 0 && f < 1; })) << stage;
+    EXPECT_TRUE(std::is_sorted(inner.begin(), inner.end())) << stage;
+  }
 
   // Reconnecting with Last-Event-ID replays exactly what came after it.
   const std::uint64_t mid = seen[seen.size() / 2]["seq"];
