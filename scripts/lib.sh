@@ -23,6 +23,8 @@ TP_PACKAGES=(
   assimp-utils  # independent OBJ/MTL reader for the garment.obj test
   libjs-three chromium chromium-driver python3-selenium  # browser viewer check of garment.obj
   argyll  # printctl calibrate: targen, colprof, profcheck (docs/colour.md)
+  libcpp-httplib-dev libssl-dev openssl  # printd's HTTP API (TLS via OpenSSL); the tests make a cert
+  systemd dpkg-dev wrk  # systemd-analyze verify and dpkg-shlibdeps for the .deb test; HTTP load figures
 )
 
 tp_log() { printf '\033[1m==> %s\033[0m\n' "$*" >&2; }

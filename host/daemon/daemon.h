@@ -9,6 +9,7 @@
 
 #include "host/common/error.h"
 #include "host/daemon/control_socket.h"
+#include "host/daemon/http/http_server.h"
 #include "host/job/package.h"
 #include "host/job/printer_choice.h"
 
@@ -26,6 +27,8 @@ struct DaemonConfig {
   PackageLimits limits;                ///< what a job may hold and ask for (docs/daemon.md)
   int max_crashes = 1;                 ///< fatal signals while running a job before it is failed
   int max_unclean_exits = 8;           ///< kill -9 / power losses while running a job before it is failed
+  HttpConfig http;                     ///< the HTTP API (docs/daemon.md, docs/api.yaml)
+  std::size_t event_log_size = 4096;   ///< events kept for Last-Event-ID replay
 };
 
 /// Runs the daemon until `stop` becomes true (SIGTERM/SIGINT in printd). A job running at stop

@@ -3,6 +3,7 @@
 
 #include <spdlog/spdlog.h>
 
+#include <algorithm>
 #include <chrono>
 #include <ctime>
 
@@ -67,8 +68,20 @@ Status run_job(const Job& job, const RunOptions& options, const geometry::Cancel
   // docs/report.md; "warnings" collects what a person should look at even when the job is done.
   nlohmann::json report = {{"schema", "tp-report/1"}, {"job", job.name}, {"job_id", options.job_id},
                             {"started", utc_now()}, {"warnings", nlohmann::json::array()}};
-  internal::StageTracker tracker(options, cancel, report);
-  internal::PipelineState ps{job, options, cancel, report};
+  // Progress of the print stage: each acknowledged swath against the stage's estimate.
+  RunOptions opts = options;
+  if (options.on_progress) {
+    opts.on_checkpoint = [&options, &report](std::int64_t swath) {
+      if (options.on_checkpoint) options.on_checkpoint(swath);
+      const auto est = report.find("estimate");
+      const std::int64_t total = est != report.end() && est->is_object() ? est->value("swaths", std::int64_t{0}) : 0;
+      const double fraction = total > 0 ? std::min(1.0, static_cast<double>(swath + 1) / static_cast<double>(total)) : 0.0;
+      options.on_progress(Stage::kPrint, fraction,
+                          "swath " + std::to_string(swath + 1) + (total > 0 ? " of " + std::to_string(total) : ""));
+    };
+  }
+  internal::StageTracker tracker(opts, cancel, report);
+  internal::PipelineState ps{job, opts, cancel, report};
   auto t0 = std::chrono::steady_clock::now();
   spdlog::info("job {} '{}': running into {}", options.job_id, job.name, options.out_dir.string());
 

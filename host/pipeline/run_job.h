@@ -12,6 +12,7 @@
 #include "geometry/common/cancel.h"
 #include "host/common/error.h"
 #include "host/job/job.h"
+#include "host/pipeline/printer_live.h"
 
 namespace tp::host {
 
@@ -39,6 +40,13 @@ struct RunOptions {
   std::int64_t job_id = 0;
   std::function<void(Stage, StageState, double seconds)> on_stage;
   std::function<void(std::int64_t swath)> on_checkpoint;
+  /// Progress within a stage, where the stage can tell: `fraction` 0..1 of its work done and a
+  /// short `detail` ("swath 12 of 40"). Called on the pipeline's thread, or (the marker stage's
+  /// time-budget ticks) on a timer thread while the pipeline thread waits: never two at once.
+  std::function<void(Stage, double fraction, const std::string& detail)> on_progress;
+  /// The live printer while the print stage runs: each status report and each fired cue. Called on
+  /// the pipeline's thread; keep it quick.
+  std::function<void(const PrinterLive&)> on_printer;
 };
 
 /// Runs every stage of `job`. Always writes `<out_dir>/report.json` (stages, timings, figures,

@@ -1,6 +1,9 @@
 // host/pipeline/stage_marker.cpp: the marker stage: cut outlines nested on the roll under the
 // job's grain, mirror, gap and defect rules; markers laid end to end; marker.png.
 #include "geometry/nesting/nest_pieces.h"
+#include <optional>
+
+#include "host/pipeline/internal/budget_ticker.h"
 #include "host/pipeline/internal/output_files.h"
 #include "host/pipeline/internal/pipeline_state.h"
 #include "host/pipeline/internal/plan_steps.h"
@@ -58,7 +61,14 @@ Status stage_marker(PipelineState& ps) {
     ps.markers = std::move(**stored);
     ps.stage_reused = true;
   } else {
+    // Progress: the nester has no hook, but a time budget tells how far it is. A timer thread
+    // reports elapsed / budget while the pipeline thread nests (it makes no other calls meanwhile,
+    // and the thread is joined before the stage ends, so calls never overlap).
+    std::optional<BudgetTicker> ticker;
+    if (ps.options.on_progress && opt.time_limit_s > 0)
+      ticker.emplace(ps.options.on_progress, Stage::kMarker, opt.time_limit_s);
     auto markers = geometry::nest_pieces(items, opt, ps.cancel, &nest_stats);
+    ticker.reset();
     if (!markers) {
       auto code = markers.error().code == geometry::ErrorCode::kCancelled ? ErrorCode::kCancelled : ErrorCode::kPipeline;
       return fail(code, markers.error().message);

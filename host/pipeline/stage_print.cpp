@@ -165,6 +165,16 @@ Status stage_print(PipelineState& ps) {
     session->on_swath_printed([&](std::uint32_t index, std::int64_t) {
       if (ps.options.on_checkpoint) ps.options.on_checkpoint(index);
     });
+    if (ps.options.on_printer) {
+      PrintSession* live = session.get();
+      session->on_status([&ps, live](const device::StatusMsg& st) {
+        ps.options.on_printer(PrinterLive{live->printer(), st, std::nullopt});
+      });
+      session->on_cue_fired([&ps, live](const CueRecord& cue) {
+        const device::StatusMsg* st = live->printer_status();
+        ps.options.on_printer(PrinterLive{live->printer(), st ? *st : device::StatusMsg{}, cue});
+      });
+    }
     JobStart start;
     start.job_id = static_cast<std::uint64_t>(ps.options.job_id);
     start.name = ps.job.name;
@@ -192,7 +202,18 @@ Status stage_print(PipelineState& ps) {
     }
     return {};
   };
-  auto stats = rip::rip_marker(ps.roll, *ps.renderer, *model, settings, sink, {}, ps.cancel);
+  // Progress: with a printer the print stage counts acknowledged swaths (run_job's checkpoint);
+  // without one the RIP's bands are the stage's work.
+  rip::ProgressCallback rip_progress;
+  if (!session && ps.options.on_progress)
+    rip_progress = [&ps](const rip::RipProgress& p) {
+      if (p.rows_total <= 0) return;
+      const double fraction = std::min(1.0, static_cast<double>(p.rows_done) / static_cast<double>(p.rows_total));
+      ps.options.on_progress(Stage::kPrint, fraction,
+                             "rip band " + std::to_string(p.band) + ": rows " + std::to_string(p.rows_done) + " of " +
+                                 std::to_string(p.rows_total));
+    };
+  auto stats = rip::rip_marker(ps.roll, *ps.renderer, *model, settings, sink, rip_progress, ps.cancel);
   if (!stats) {
     if (session) (void)session->abort_job(stats.error().message);  // a no-op once the session ended it
     if (printer_error) return fail(*printer_error);

@@ -107,6 +107,12 @@ class PrintSession {
   /// Called when the printer reports swaths laid on the fabric: the highest printed index and the
   /// fabric position (um from the job's start) it was laid at. The pipeline's resume checkpoint.
   void on_swath_printed(std::function<void(std::uint32_t index, std::int64_t fabric_um)> callback);
+  /// Called with each new status report the printer sends (state, faults, buffer, counters), as
+  /// it arrives: the live view printd serves. Keep it quick.
+  void on_status(std::function<void(const device::StatusMsg&)> callback) { on_status_ = std::move(callback); }
+  /// Called once per cue when it fires on the cutting table (its GPIO line pulsed, or acknowledged
+  /// without GPIO), with where the fabric stood.
+  void on_cue_fired(std::function<void(const CueRecord&)> callback) { on_cue_fired_ = std::move(callback); }
 
   /// Opens a job on the printer, after asking it what it holds of this job: the same job still
   /// open (a host restart or reconnect) is re-attached and resumes after the swaths the printer
@@ -166,6 +172,8 @@ class PrintSession {
   device::IdentifyMsg identity_;
   std::function<void(std::uint32_t)> on_acked_;
   std::function<void(std::uint32_t, std::int64_t)> on_printed_;
+  std::function<void(const device::StatusMsg&)> on_status_;
+  std::function<void(const CueRecord&)> on_cue_fired_;
 
   bool active_ = false;
   bool ending_ = false;

@@ -65,6 +65,7 @@ Status PrintSession::absorb_status() {
   if (!st || link_->status_serial() == seen_status_) return {};
   seen_status_ = link_->status_serial();
   const device::StatusMsg s = *st;
+  if (on_status_) on_status_(s);
   if (paused_since_ && s.state != device::PrinterState::kPaused) {
     stats_.pause_s += std::chrono::duration<double>(Clock::now() - *paused_since_).count();
     paused_since_.reset();
@@ -137,6 +138,7 @@ Status PrintSession::fire_cue(std::uint32_t id, const geometry::CancelToken* can
     cue.fired = true;
     const device::StatusMsg* s = link_->status();
     cue.fired_at_um = s ? s->fabric_pos_um : 0;
+    if (on_cue_fired_) on_cue_fired_(cue);
   }
   device::CueDoneMsg done{id};
   if (auto s = link_->send_msg(device::MessageType::kCueDone, done); !s) {

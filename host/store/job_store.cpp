@@ -219,6 +219,30 @@ Result<std::vector<JobRecord>> JobStore::list(int limit) {
   return out;
 }
 
+Result<std::vector<JobRecord>> JobStore::list_page(int limit, std::int64_t offset, std::optional<JobState> state) {
+  std::string sql = std::string("SELECT ") + kColumns + " FROM jobs" + (state ? " WHERE state=?" : "") +
+                    " ORDER BY id DESC LIMIT ? OFFSET ?";
+  Stmt s(db_, sql.c_str());
+  if (!s.ok()) return fail(ErrorCode::kStore, "list: " + s.error());
+  int i = 1;
+  if (state) s.bind(i++, std::string(to_string(*state)));
+  s.bind(i++, static_cast<std::int64_t>(limit));
+  s.bind(i++, offset);
+  std::vector<JobRecord> out;
+  int rc;
+  while ((rc = s.step()) == SQLITE_ROW) out.push_back(read_record(s));
+  if (rc != SQLITE_DONE) return fail(ErrorCode::kStore, "list: " + s.error());
+  return out;
+}
+
+Result<std::int64_t> JobStore::count(std::optional<JobState> state) {
+  Stmt s(db_, state ? "SELECT COUNT(*) FROM jobs WHERE state=?" : "SELECT COUNT(*) FROM jobs");
+  if (!s.ok()) return fail(ErrorCode::kStore, "count: " + s.error());
+  if (state) s.bind(1, std::string(to_string(*state)));
+  if (s.step() != SQLITE_ROW) return fail(ErrorCode::kStore, "count: " + s.error());
+  return s.i64(0);
+}
+
 Status JobStore::set_state(std::int64_t id, JobState state, const std::string& error) {
   Stmt s(db_, "UPDATE jobs SET state=?, error=?, updated_ms=? WHERE id=?");
   if (!s.ok()) return fail(ErrorCode::kStore, "set_state: " + s.error());

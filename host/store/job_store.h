@@ -73,6 +73,11 @@ class JobStore {
   [[nodiscard]] Result<std::optional<JobRecord>> get(std::int64_t id);
   /// Newest first.
   [[nodiscard]] Result<std::vector<JobRecord>> list(int limit);
+  /// Newest first, `offset` jobs skipped, only jobs in `state` when it is given (HTTP paging).
+  [[nodiscard]] Result<std::vector<JobRecord>> list_page(int limit, std::int64_t offset,
+                                                         std::optional<JobState> state);
+  /// How many jobs there are (in `state` when given).
+  [[nodiscard]] Result<std::int64_t> count(std::optional<JobState> state);
   [[nodiscard]] Status set_state(std::int64_t id, JobState state, const std::string& error = {});
   [[nodiscard]] Status set_stage(std::int64_t id, const std::string& stage, const std::string& state,
                                  double seconds);

@@ -1,4 +1,4 @@
-// host/app/printctl/cmd_daemon.cpp: printctl submit | status | cancel, talking to printd.
+// host/app/printctl/cmd_daemon.cpp: printctl submit [--wait, with progress] | status | cancel, talking to printd.
 #include <nlohmann/json.hpp>
 
 #include <chrono>
@@ -6,7 +6,10 @@
 #include <filesystem>
 #include <thread>
 
+#include <unistd.h>
+
 #include "host/app/printctl/commands.h"
+#include "host/app/printctl/progress_view.h"
 #include "host/common/text.h"
 #include "host/daemon/control_socket.h"
 
@@ -81,9 +84,33 @@ void register_daemon_commands(CLI::App& app) {
       std::printf("queued job %lld '%s'\n", id, r.value("name", std::string()).c_str());
     if (!wait) return;
     auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(wait_timeout_s);
+    // Progress comes from the daemon's event log (the events the HTTP API streams), from the
+    // start of the log so a job that already began shows its earlier stages too.
+    ProgressView view(stderr, ::isatty(2) != 0);
+    std::uint64_t after = 0;
+    bool events = true;
+    const auto pump = [&](int wait_ms) {
+      if (!events) return;
+      auto reply = socket_request(
+          args.socket_path(), dump_json(json{{"op", "events"}, {"after", after}, {"job", id}, {"wait_ms", wait_ms}}));
+      json e = reply ? json::parse(*reply, nullptr, false) : json();
+      if (!e.is_object() || !e.value("ok", false)) {
+        events = false;  // an older printd: status polling only
+        return;
+      }
+      after = e.value("last", after);
+      for (const json& ev : e["events"]) {
+        if (ev.value("type", "") != "progress" || ev.value("job_id", 0LL) != id) continue;
+        const std::string stage = ev.value("stage", ""), st = ev.value("state", "");
+        if (ev.contains("detail")) view.progress(stage, ev.value("fraction", 0.0), ev.value("detail", ""));
+        else view.stage(stage, st, ev.value("seconds", 0.0));
+      }
+    };
     for (;;) {
+      pump(500);
       json s = request(args, {{"op", "status"}, {"id", id}})["job"];
       const std::string state = s.value("state", "");
+      if (state == "done" || state == "failed" || state == "cancelled") pump(0);  // the last stages' events
       if (state == "done") {
         std::printf("job %lld done: %s\n", id, s.value("out_dir", std::string()).c_str());
         return;
@@ -96,7 +123,7 @@ void register_daemon_commands(CLI::App& app) {
         std::fprintf(stderr, "job %lld still %s after %.0f s\n", id, state.c_str(), wait_timeout_s);
         throw CLI::RuntimeError(4);
       }
-      std::this_thread::sleep_for(std::chrono::milliseconds(250));
+      if (!events) std::this_thread::sleep_for(std::chrono::milliseconds(250));
     }
   });
 

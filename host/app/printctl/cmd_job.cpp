@@ -3,11 +3,13 @@
 
 #include <cstdio>
 #include <ctime>
+#include <memory>
 #include <filesystem>
 #include <string>
 #include <vector>
 
 #include "host/app/printctl/commands.h"
+#include "host/app/printctl/progress_view.h"
 #include "host/common/atomic_file.h"
 #include "host/common/failure_report.h"
 #include "host/job/manifest.h"
@@ -125,6 +127,14 @@ void register_job_commands(CLI::App& app) {
     if (!run_plan.empty()) opt.plan_dir = fs::absolute(run_plan);
     // Printers report "no job" as id 0, so a command-line run takes a non-zero id of its own.
     opt.job_id = static_cast<std::int64_t>(std::time(nullptr));
+    // The same progress the daemon's events carry, drawn on standard error.
+    auto view = std::make_shared<ProgressView>(stderr, ::isatty(2) != 0);
+    opt.on_stage = [view](Stage s, StageState st, double secs) {
+      view->stage(std::string(to_string(s)), std::string(to_string(st)), secs);
+    };
+    opt.on_progress = [view](Stage s, double fraction, const std::string& detail) {
+      view->progress(std::string(to_string(s)), fraction, detail);
+    };
     geometry::CancelToken cancel;
     if (auto st = reserve_report(out, job->name, opt.job_id); !st) die(st.error(), 1);
     if (auto st = run_job(*job, opt, cancel); !st) {

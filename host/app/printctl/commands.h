@@ -12,6 +12,8 @@ namespace tp::host::cli {
 void register_job_commands(CLI::App& app);
 // Daemon client commands (cmd_daemon.cpp): submit, status, cancel.
 void register_daemon_commands(CLI::App& app);
+// HTTP API tokens (cmd_token.cpp): token add | list | revoke.
+void register_token_commands(CLI::App& app);
 // Printer link tools (cmd_link.cpp): wire-dump.
 void register_link_commands(CLI::App& app);
 // Garment tools (cmd_garment.cpp): garment (write a sample pattern and its 3D garment).

@@ -12,6 +12,7 @@ int main(int argc, char** argv) {
 
   tp::host::cli::register_job_commands(app);
   tp::host::cli::register_daemon_commands(app);
+  tp::host::cli::register_token_commands(app);
   tp::host::cli::register_link_commands(app);
   tp::host::cli::register_garment_commands(app);
   tp::host::cli::register_pattern_commands(app);

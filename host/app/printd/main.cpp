@@ -1,4 +1,4 @@
-// host/app/printd/main.cpp: the printd daemon: hot folder, control socket, job queue, printing.
+// host/app/printd/main.cpp: the printd daemon: hot folder, control socket, HTTP API, job queue, printing.
 #include <CLI/CLI.hpp>
 #include <spdlog/spdlog.h>
 
@@ -18,7 +18,7 @@ void on_signal(int) { g_stop.store(true); }
 
 int main(int argc, char** argv) {
   tp::rip::keep_memory_flat();  // peak memory must not grow with roll length
-  CLI::App app{"printd: garment print daemon (hot folder, local socket, SQLite job queue)"};
+  CLI::App app{"printd: garment print daemon (hot folder, local socket, HTTP API, SQLite job queue)"};
   tp::host::DaemonConfig cfg;
   std::string state_dir = "/var/lib/printd", hot, out = "/var/lib/printd/out", socket;
   app.add_option("--state-dir", state_dir, "Job database, spool and socket")->capture_default_str();
@@ -44,6 +44,28 @@ int main(int argc, char** argv) {
   app.add_option("--max-unclean-exits", cfg.max_unclean_exits,
                  "A job printd vanished under (kill -9, out of memory, power loss) more than this many times is "
                  "failed, not resumed again")->capture_default_str()->check(CLI::Range(0, 1000));
+  app.set_config("--config", "/etc/printd/printd.conf",
+                 "Config file: one `option = value` line per long option (docs/daemon.md); absent is fine");
+  app.allow_config_extras(CLI::config_extras_mode::error);  // a misspelt key must not pass unseen
+  app.add_option("--listen", cfg.http.listen,
+                 "HTTP API address host:port, or 'off'; beyond loopback needs --tls-cert/--tls-key and tokens")
+      ->capture_default_str();
+  app.add_option("--tls-cert", cfg.http.tls_cert, "PEM certificate for HTTPS");
+  app.add_option("--tls-key", cfg.http.tls_key, "PEM private key for HTTPS");
+  app.add_flag("--require-token", cfg.http.require_token,
+               "Require bearer tokens on loopback too (always required beyond loopback)");
+  std::size_t upload_mb = cfg.http.max_upload_bytes >> 20;
+  app.add_option("--http-max-upload-mb", upload_mb, "Largest job upload accepted over HTTP, MiB")
+      ->capture_default_str()->check(CLI::Range(1, 65536));
+  app.add_option("--http-max-uploads", cfg.http.max_concurrent_uploads, "Uploads accepted at once; more get 503")
+      ->capture_default_str()->check(CLI::Range(1, 256));
+  app.add_option("--http-timeout-ms", cfg.http.read_timeout_ms,
+                 "An HTTP client must keep sending (and reading) within this")
+      ->capture_default_str()->check(CLI::Range(100, 600000));
+  app.add_option("--http-threads", cfg.http.threads, "HTTP connections served at once (event streams included)")
+      ->capture_default_str()->check(CLI::Range(2, 1024));
+  app.add_option("--event-log-size", cfg.event_log_size, "Events kept for Last-Event-ID replay")
+      ->capture_default_str()->check(CLI::Range(16, 1000000));
   std::vector<std::string> limits;
   app.add_option("--limit", limits,
                  "NAME=VALUE: raise or lower a job limit (repeatable); defaults: " +
@@ -56,6 +78,8 @@ int main(int argc, char** argv) {
     }
   }
 
+  cfg.http.max_upload_bytes = upload_mb << 20;
+  cfg.http.write_timeout_ms = cfg.http.read_timeout_ms;
   cfg.state_dir = state_dir;
   cfg.hot_folder = hot;
   cfg.out_dir = out;

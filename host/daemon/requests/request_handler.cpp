@@ -1,6 +1,8 @@
 // host/daemon/requests/request_handler.cpp: typed, checked access to control-socket requests.
 #include "host/daemon/requests/request_handler.h"
 
+#include <optional>
+
 #include "host/common/text.h"
 
 namespace tp::host {
@@ -46,11 +48,32 @@ std::string handle_status(JobStore& store, const json& req) {
   }
   auto limit = int_field(req, "status", "limit", 50, 1, kMaxStatusLimit);
   if (!limit) return err(limit.error().message);
-  auto list = store.list(static_cast<int>(*limit));
+  auto offset = int_field(req, "status", "offset", 0, 0, INT64_MAX);
+  if (!offset) return err(offset.error().message);
+  std::optional<JobState> state;
+  if (auto it = req.find("state"); it != req.end()) {
+    state = it->is_string() ? job_state_from_string(it->get<std::string>()) : std::nullopt;
+    if (!state) return err("status: \"state\" must be one of queued, running, done, failed, cancelled");
+  }
+  auto list = store.list_page(static_cast<int>(*limit), *offset, state);
   if (!list) return err(list.error().message);
+  auto total = store.count(state);
+  if (!total) return err(total.error().message);
   json jobs = json::array();
   for (const auto& r : *list) jobs.push_back(job_record_json(r));
-  return dump_json(json{{"ok", true}, {"jobs", jobs}});
+  return dump_json(json{{"ok", true}, {"jobs", jobs}, {"total", *total}, {"offset", *offset}});
+}
+
+std::string handle_reprint(const json& req, const RequestHooks& hooks) {
+  if (!req.contains("id")) return err("reprint needs \"id\": an integer");
+  auto id = int_field(req, "reprint", "id", 0, 1, INT64_MAX);
+  if (!id) return err(id.error().message);
+  if (!hooks.reprint) return err("reprint: this daemon takes no jobs");
+  auto reply = hooks.reprint(*id);
+  if (!reply) return err(reply.error().message);
+  json out = *reply;
+  out["ok"] = true;
+  return dump_json(out);
 }
 
 std::string handle_submit(const json& req, const RequestHooks& hooks) {
@@ -84,6 +107,19 @@ std::string handle_cancel(JobStore& store, const json& req, const RequestHooks& 
   return dump_json(json{{"ok", true}, {"id", *id}, {"state", *st == JobState::kRunning ? "cancelling" : "cancelled"}});
 }
 
+std::string handle_events(const json& req, const RequestHooks& hooks) {
+  auto after = int_field(req, "events", "after", 0, 0, INT64_MAX);
+  if (!after) return err(after.error().message);
+  auto job = int_field(req, "events", "job", 0, 0, INT64_MAX);
+  if (!job) return err(job.error().message);
+  auto wait = int_field(req, "events", "wait_ms", 0, 0, 1000);
+  if (!wait) return err(wait.error().message);
+  if (!hooks.events) return err("events: this daemon keeps no event log");
+  json out = hooks.events(static_cast<std::uint64_t>(*after), *job, static_cast<int>(*wait));
+  out["ok"] = true;
+  return dump_json(out);
+}
+
 }  // namespace
 
 json job_record_json(const JobRecord& r) {
@@ -113,7 +149,9 @@ std::string handle_request(JobStore& store, const std::string& request, const Re
     if (op == "submit") return handle_submit(req, hooks);
     if (op == "status") return handle_status(store, req);
     if (op == "cancel") return handle_cancel(store, req, hooks);
-    return err("unknown op \"" + op + "\" (ping, submit, status, cancel)");
+    if (op == "reprint") return handle_reprint(req, hooks);
+    if (op == "events") return handle_events(req, hooks);
+    return err("unknown op \"" + op + "\" (ping, submit, status, cancel, reprint, events)");
   } catch (const std::exception& e) {
     // A bug here must cost the client its request, never the daemon its life.
     try {

@@ -1,5 +1,5 @@
-// host/daemon/requests/request_handler.h: the control socket's operations (ping, submit, status,
-// cancel) on one request line; every field of the untrusted request is checked before use.
+// host/daemon/requests/request_handler.h: the daemon's operations (ping, submit, status, cancel,
+// reprint, events) on one JSON request, for the control socket and the HTTP API; every field is checked.
 #pragma once
 
 #include <cstdint>
@@ -21,6 +21,12 @@ struct RequestHooks {
   std::function<Result<nlohmann::json>(const std::filesystem::path& package, bool reprint)> submit;
   /// A running job was asked to cancel: stop it now if this process runs it.
   std::function<void(std::int64_t id)> cancel_running;
+  /// Queues job `id`'s package again (kept by content hash in the state directory), even though
+  /// the same content printed before. Returns the new job's fields ({"id", "name", ...}).
+  std::function<Result<nlohmann::json>(std::int64_t id)> reprint;
+  /// Events after sequence number `after` (job `job` only when non-zero), waiting up to `wait_ms`
+  /// for one: {"events": [...], "last": newest seq, "gap": older ones were dropped}.
+  std::function<nlohmann::json(std::uint64_t after, std::int64_t job, int wait_ms)> events;
   /// A queued job was cancelled: release its spooled package.
   std::function<void(std::int64_t id)> cancelled_queued;
 };

@@ -34,7 +34,7 @@ class Printd {
       if (f) ::dup2(::fileno(stdout), 2);
       const std::string state = (root_ / "state").string(), hot = (root_ / "hot").string(), out = (root_ / "out").string();
       ::execl(bin.c_str(), bin.c_str(), "--state-dir", state.c_str(), "--hot-folder", hot.c_str(), "--out", out.c_str(),
-              "--printer", "none", "--poll-ms", "100", static_cast<char*>(nullptr));
+              "--printer", "none", "--poll-ms", "100", "--listen", "127.0.0.1:0", static_cast<char*>(nullptr));
       ::_exit(127);
     }
     for (int i = 0; i < 200; ++i) {

@@ -7,6 +7,7 @@
 // clean run and every killed run plan the same marker; a resumed run reuses the job's stored plan.
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>
+#include <httplib.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -15,6 +16,7 @@
 #include <cstdio>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <regex>
 #include <thread>
 
 #include "tests/scenarios/jobs/run_command.h"
@@ -77,7 +79,7 @@ class PrintRoom {
                                         "while :; do\n"
                                         "  sh -c 'echo $$ > \"$0/printd.pid\"; exec \"$1\" --state-dir \"$0/state\" "
                                         "--hot-folder \"$0/hot\" --out \"$0/out\" --printer sim --poll-ms 100 "
-                                        "--max-crashes 2' "
+                                        "--max-crashes 2 --listen 127.0.0.1:0' "
                                         "\"$1\" \"$2\" >> \"$1/printd.log\" 2>&1\n"
                                         "  [ -e \"$1/stop\" ] && exit 0\n"
                                         "  sleep 0.2\n"
@@ -313,6 +315,98 @@ TEST(KillResume, TheFabricAfterKillsEqualsACleanRunDropForDrop) {
     EXPECT_TRUE(o.width == clean.width && o.height == clean.height && o.pixels == clean.pixels)
         << k.name << ": the fabric is not the clean run's pixel for pixel";
   }
+}
+
+std::string read_text(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+// The HTTP ports printd logged, one per start, oldest first.
+std::vector<int> http_ports(const PrintRoom& room) {
+  std::vector<int> ports;
+  const std::string log = read_text(room.root() / "printd.log");
+  const std::regex re(R"(HTTP API on http://127\.0\.0\.1:(\d+))");
+  for (auto it = std::sregex_iterator(log.begin(), log.end(), re); it != std::sregex_iterator(); ++it)
+    ports.push_back(std::stoi((*it)[1]));
+  return ports;
+}
+
+json get_job(int port, std::int64_t id) {
+  httplib::Client c("127.0.0.1", port);
+  c.set_connection_timeout(1, 0);
+  auto r = c.Get("/api/v1/jobs/" + std::to_string(id));
+  if (!r || r->status != 200) return json();
+  json j = json::parse(r->body, nullptr, false);
+  return j.is_discarded() ? json() : j["job"];
+}
+
+// Crash safety through the API: the job goes in over HTTP, printd is killed with SIGKILL after the
+// printer printed 5 swaths, the service loop starts it again, and GET /api/v1/jobs/{id} on the new
+// daemon shows the job resumed (an unclean exit counted, the checkpoint kept) and then done, with
+// the clean run's fabric. Prints the time from the kill to the next swath on the fabric.
+TEST(KillResume, KilledWhilePrintingTheHttpApiShowsTheJobResumedWithTheCleanFabric) {
+  const Outcome clean = print_with_kill("http-clean", -1, false);
+  ASSERT_EQ(clean.state, "done");
+  ASSERT_FALSE(clean.pixels.empty());
+
+  PrintRoom room(scratch_dir("kill-resume-http"));
+  const fs::path job = make_job(room.root() / "jobs");
+  room.start();
+  std::vector<int> ports;
+  for (int i = 0; i < 200 && ports.empty(); ++i) {
+    std::this_thread::sleep_for(50ms);
+    ports = http_ports(room);
+  }
+  ASSERT_FALSE(ports.empty()) << read_text(room.root() / "printd.log");
+  httplib::MultipartFormDataItems files;
+  for (const auto& e : fs::directory_iterator(job))
+    files.push_back({"files", read_text(e.path()), e.path().filename().string(), "application/json"});
+  httplib::Client c("127.0.0.1", ports.back());
+  auto up = c.Post("/api/v1/jobs", files);
+  ASSERT_TRUE(up);
+  ASSERT_EQ(up->status, 201) << up->body;
+  const std::int64_t id = json::parse(up->body)["id"];
+
+  ASSERT_TRUE(room.wait_printed(5)) << "the printer never printed 5 swaths";
+  const int printed_at_kill = room.printed_next();
+  const auto killed = Clock::now();
+  room.kill_printd();
+  // The loop starts printd again; its API answers on a new port.
+  const auto until = Clock::now() + 60s;
+  json resumed;
+  while (Clock::now() < until) {
+    const std::vector<int> now = http_ports(room);
+    if (now.size() > ports.size()) {
+      resumed = get_job(now.back(), id);
+      if (resumed.is_object() && resumed.value("unclean_exits", 0) == 1) break;
+    }
+    std::this_thread::sleep_for(20ms);
+  }
+  ASSERT_TRUE(resumed.is_object()) << "printd did not come back: " << read_text(room.root() / "printd.log");
+  EXPECT_EQ(resumed.value("unclean_exits", 0), 1) << resumed.dump();
+  EXPECT_GE(resumed.value("last_acked_swath", -1), 0) << "the checkpoint was lost: " << resumed.dump();
+  EXPECT_TRUE(resumed["state"] == "queued" || resumed["state"] == "running" || resumed["state"] == "done")
+      << resumed.dump();
+  ASSERT_TRUE(room.wait_printed(printed_at_kill + 1, 120s)) << "printing did not go on after the restart";
+  std::printf("kill -9 to the next swath on the fabric: %.2f s (swaths printed at the kill: %d)\n",
+              std::chrono::duration<double>(Clock::now() - killed).count(), printed_at_kill);
+
+  json end;
+  const std::vector<int> now = http_ports(room);
+  for (int i = 0; i < 1200; ++i) {
+    end = get_job(now.back(), id);
+    if (end.is_object() && (end["state"] == "done" || end["state"] == "failed")) break;
+    std::this_thread::sleep_for(250ms);
+  }
+  ASSERT_EQ(end.value("state", ""), "done") << end.dump();
+  room.stop();
+  const Outcome o = collect(room);
+  std::printf("%s\n%s\n", row("http-clean", clean).c_str(), row("http-killed", o).c_str());
+  EXPECT_EQ(o.swaths_printed, clean.swaths_printed) << "a swath missing or printed twice";
+  EXPECT_EQ(o.drops, clean.drops);
+  EXPECT_TRUE(o.width == clean.width && o.height == clean.height && o.pixels == clean.pixels)
+      << "the fabric is not the clean run's pixel for pixel";
 }
 
 // The same kills with a synthetic job (no planning, so every run sends the same swaths): the
