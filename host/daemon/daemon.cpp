@@ -134,7 +134,7 @@ class Daemon {
 
   json printer_status() {
     std::lock_guard lock(mu_);
-    return json{{"printer", cfg_.printer_override.empty() ? std::string("each job's own") : cfg_.printer_override},
+    return json{{"printer", cfg_.printer_override ? std::string(to_string(*cfg_.printer_override)) : std::string("each job's own")},
                 {"state", running_id_ != 0 ? "printing" : "idle"},
                 {"job_id", running_id_},
                 {"stage", running_stage_},
