@@ -29,6 +29,7 @@ Result<Garment> drape_garment(const Garment& sewn, const BodySdf& body, const Dr
   p.friction = o.material.friction;
   p.settle_speed_mm_s = o.settle_speed_mm_s;
   p.threads = o.threads;
+  p.on_progress = o.on_progress;
   auto r = internal::run_xpbd(cloth, body, p, cancel);
   if (!r) return fail(r.error().with_context("drape (" + o.material.name + ")"));
   Garment g = sewn;

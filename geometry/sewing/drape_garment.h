@@ -1,6 +1,8 @@
 // geometry/sewing/drape_garment.h: the sewn garment settled under gravity on the body with a fabric.
 #pragma once
 
+#include <functional>
+
 #include "geometry/body/body_sdf.h"
 #include "geometry/common/cancel.h"
 #include "geometry/common/error.h"
@@ -19,6 +21,8 @@ struct DrapeOptions {
   double self_thickness_mm = 2;      ///< distance kept between layers of the garment
   double settle_speed_mm_s = 4;
   int threads = 2;
+  /// Progress: the share of `duration_s` simulated, called every few substeps (may be empty).
+  std::function<void(double fraction)> on_progress;
 };
 
 /// What draping did.

@@ -126,10 +126,16 @@ Result<Garment> sew_garment(const Pattern& pattern, const PatternMesh& meshes, c
   internal::ClothParams params;
   params.clearance_mm = options.clearance_mm;
   params.threads = options.threads;
+  // Progress over the iterations planned for both phases (the coarse level, if any, reports its own).
+  int iterations_done = 0;
+  const int iterations_planned = std::max(1, options.sewing_iterations + options.relax_iterations);
+  if (options.on_progress)
+    params.on_iteration = [&] { options.on_progress(std::min(1.0, ++iterations_done / double(iterations_planned))); };
   const bool two_level = options.coarse_factor >= 1.5;
   if (two_level) {
     // Coarse level: the whole sewing on a coarser mesh, then its shape carried over.
     SewOptions coarse_opt = options;
+    coarse_opt.on_progress = {};  // the fine level reports; the coarse run is its first part
     coarse_opt.target_edge_mm = options.target_edge_mm * options.coarse_factor;
     coarse_opt.coarse_factor = 0;
     SewStats coarse_stats;

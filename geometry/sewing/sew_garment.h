@@ -1,6 +1,7 @@
 // geometry/sewing/sew_garment.h: the 3D garment: pieces meshed, placed, sewn and relaxed on a body.
 #pragma once
 
+#include <functional>
 #include <vector>
 
 #include "geometry/body/body_sdf.h"
@@ -30,6 +31,9 @@ struct SewOptions {
   /// the membrane (0: seams stretch like the fabric around them).
   double seam_edge_weight = 200;
   int threads = 2;
+  /// Progress: the share of the planned sewing and relaxing iterations done, called once per
+  /// iteration (may be empty). Phase B may stop early, so the last call can be below 1.
+  std::function<void(double fraction)> on_progress;
 };
 
 /// What sewing did, for reports and benchmarks.

@@ -221,6 +221,7 @@ Result<ClothStats> relax_cloth(ClothMesh& cloth, const BodySdf& body, const Clot
 
   for (int it = 0; it < p.iterations; ++it) {
     if (cancel && cancel->cancelled()) return fail(ErrorCode::kCancelled, "sewing cancelled");
+    if (p.on_iteration) p.on_iteration();
     double energy = local_step();
     if (window > 0 && !plain.empty() && energy > accepted_energy) {
       x = plain;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <functional>
 #include <vector>
 
 #include "geometry/body/body_sdf.h"
@@ -34,6 +35,7 @@ struct ClothParams {
   double tolerance_mm = 0.005;     ///< stop when no vertex moves further in one iteration
   int threads = 2;
   int anderson_window = 5;         ///< Anderson acceleration history (0: plain local-global)
+  std::function<void()> on_iteration;  ///< called once per iteration (progress), may be empty
 };
 
 /// Outcome of a run.

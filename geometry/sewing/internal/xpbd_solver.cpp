@@ -117,6 +117,7 @@ Result<XpbdStats> run_xpbd(ClothModel& cloth, const BodySdf& body, const XpbdPar
   for (int step = 0; step < total; ++step) {
     if (cancel && cancel->cancelled()) return fail(ErrorCode::kCancelled, "draping cancelled");
     if (step % broad_every == 0) {
+      if (p.on_progress) p.on_progress(static_cast<double>(step) / total);
       budget = std::clamp(1.5 * last_move + 0.05, 0.05, p.max_move_mm);
       pairs = find_self_collision_pairs(cloth, x, p.self_thickness_mm + 2 * broad_every * 2 * budget);
       st.self_pairs = static_cast<int>(pairs.point_triangle.size() + pairs.edge_edge.size());

@@ -3,6 +3,8 @@
 // self-collision, body contact with friction, gravity and damping.
 #pragma once
 
+#include <functional>
+
 #include "geometry/body/body_sdf.h"
 #include "geometry/common/cancel.h"
 #include "geometry/common/error.h"
@@ -27,6 +29,8 @@ struct XpbdParams {
   double friction = 0.4;
   double settle_speed_mm_s = 4;      ///< stop early once 99.5 % of the vertices are slower (after 0.3 s)
   int threads = 2;                   ///< body queries only; results do not depend on it
+  /// Called at each broad phase with the share of the time limit simulated (progress), may be empty.
+  std::function<void(double fraction)> on_progress;
 };
 
 /// What a run did.
