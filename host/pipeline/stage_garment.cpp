@@ -1,6 +1,11 @@
 // host/pipeline/stage_garment.cpp: the garment stage: the pieces sewn on the job's body (or laid
 // flat when it has none), aligned to the body first, the distortion figures and fit checks, the
 // 3D garment as OBJ and its previews.
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <string>
+
 #include "geometry/body/load_body_obj.h"
 #include "geometry/garment/align_to_body.h"
 #include "geometry/garment/distortion.h"
@@ -53,25 +58,39 @@ Result<geometry::ClothMaterial> job_material(const GarmentMaterialSpec& spec) {
   return *m;
 }
 
+// The garment stage's progress: a solver's own fraction mapped into [from, to] of the stage,
+// passed on only when it has moved by a percent or more (the solvers call once per iteration).
+std::function<void(double)> garment_progress(PipelineState& ps, double from, double to, const char* what) {
+  if (!ps.options.on_progress) return {};
+  return [&ps, from, to, what, last = -1.0](double f) mutable {
+    const double stage = from + (to - from) * std::clamp(f, 0.0, 1.0);
+    if (stage - last < 0.01) return;
+    last = stage;
+    ps.options.on_progress(Stage::kGarment, stage,
+                           std::string(what) + " " + std::to_string(std::lround(100 * f)) + " %");
+  };
+}
+
 // Drapes the sewn garment in the job's fabric; its figures go into report.garment.drape.
 Result<geometry::Garment> drape_job_garment(PipelineState& ps, nlohmann::json& figures) {
   auto material = job_material(ps.job.garment.material);
   if (!material) return fail(material.error());
   geometry::DrapeOptions o;
   o.material = *material;
+  o.on_progress = garment_progress(ps, 0.5, 1.0, "draping");
   geometry::DrapeStats st;
   auto g = geometry::drape_garment(*ps.garment, *ps.body, o, &st, &ps.cancel);
   if (!g) return fail(from_geometry(g.error()));
   figures = {{"material", material->name},
-                                   {"density_g_m2", material->density_g_m2},
-                                   {"stretch_limit", material->stretch_limit},
-                                   {"bending_rigidity_uN_m", material->bending_rigidity_uN_m},
-                                   {"friction", material->friction},
-                                   {"substeps", st.substeps},
-                                   {"simulated_s", st.simulated_s},
-                                   {"max_speed_mm_s", st.max_speed_mm_s},
-                                   {"self_intersections", geometry::count_self_intersections(*g)},
-                                   {"seconds", st.seconds}};
+             {"density_g_m2", material->density_g_m2},
+             {"stretch_limit", material->stretch_limit},
+             {"bending_rigidity_uN_m", material->bending_rigidity_uN_m},
+             {"friction", material->friction},
+             {"substeps", st.substeps},
+             {"simulated_s", st.simulated_s},
+             {"max_speed_mm_s", st.max_speed_mm_s},
+             {"self_intersections", geometry::count_self_intersections(*g)},
+             {"wall_s", st.seconds}};
   return std::move(*g);
 }
 
@@ -101,6 +120,7 @@ Status stage_garment(PipelineState& ps) {
                    {"reason", al->reason}};
     geometry::SewOptions opt;
     opt.target_edge_mm = ps.job.garment.mesh_edge_mm;
+    opt.on_progress = garment_progress(ps, 0.0, ps.job.garment.drape ? 0.5 : 1.0, "sewing");
     auto g = geometry::sew_garment(ps.pattern, *ps.meshes, *ps.body, opt, &stats, &ps.cancel);
     if (!g) return fail(from_geometry(g.error()));
     ps.garment = std::move(*g);
@@ -108,7 +128,7 @@ Status stage_garment(PipelineState& ps) {
     ps.report["sewing"] = {{"sewing_iterations", stats.sewing_iterations},
                            {"relax_iterations", stats.relax_iterations},
                            {"contacts", stats.contacts},
-                           {"seconds", stats.seconds}};
+                           {"wall_s", stats.seconds}};
   } else if (!ps.garment) {
     auto g = geometry::flat_garment(ps.pattern, *ps.meshes);
     if (!g) return fail(from_geometry(g.error()));
@@ -134,7 +154,7 @@ Status stage_garment(PipelineState& ps) {
                           {"area_change", d.area_change},
                           {"seam_len_diff_max", d.seam_len_diff_max},
                           {"inside_body", d.inside_body},
-                          {"min_clearance_mm", ps.body ? d.min_clearance_mm : 0.0}};
+                          {"min_clearance_mm", ps.body ? nlohmann::json(d.min_clearance_mm) : nlohmann::json(nullptr)}};
   ps.report["garment"]["stitches"] = stitches_json(ps.pattern, ps.stitch_sources, stats.stitch_gap_mm);
   if (!alignment.is_null()) ps.report["garment"]["alignment"] = alignment;
   if (draped) {
