@@ -40,7 +40,7 @@ class FabricPreview {
  private:
   struct Files;
   FabricPreview(const FabricColourModel& model, const PreviewSpec& spec);
-  Status flush();
+  [[nodiscard]] Status flush();
 
   const FabricColourModel& model_;
   PreviewSpec spec_;
