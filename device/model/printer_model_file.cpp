@@ -258,10 +258,12 @@ Result<PrinterModel> parse_printer_model(std::string_view text, std::string_view
     if (!seen.count(required)) return fail(ErrorCode::kParse, src + ": required key '" + required + "' missing");
   if (m.inks.empty()) return fail(ErrorCode::kParse, src + ": no 'ink' lines; a printer needs at least one ink");
   if (!seen.count("drop_volume_pl")) m.drop_volume_pl = default_drop_volumes_pl(m.bits_per_pixel);
-  for (const auto& [name, factor] : strengths) {
+  for (const auto& strength : strengths) {
+    // Not a structured binding: clang 14 (the fuzz build) cannot capture one in a lambda.
+    const std::string& name = strength.first;
     auto it = std::find_if(m.inks.begin(), m.inks.end(), [&](const InkChannel& c) { return c.name == name; });
     if (it == m.inks.end()) return fail(ErrorCode::kParse, src + ": key 'ink_strength': no ink '" + name + "'");
-    it->strength = factor;
+    it->strength = strength.second;
   }
   if (auto s = validate_printer_model(m); !s) return fail(ErrorCode::kParse, src + ": " + s.error().message);
   return m;
