@@ -1,5 +1,5 @@
 // tests/fuzz/host_zip_fuzz.cpp: zip unpacking never crashes and never writes outside its folder.
-// fuzz-sources: host/job host/common
+// fuzz-sources: host/job host/common host/session/sim_reexec.cpp geometry/sewing/cloth_material.cpp
 #include <unistd.h>
 
 #include <cstddef>
