@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "tests/scenarios/jobs/report_schema.h"
 #include "tests/scenarios/jobs/run_command.h"
 #include "tests/support/paths.h"
 
@@ -115,18 +116,6 @@ TEST_F(OutputReaders, TiffinfoSeesInkChannelsAtThePrintResolutionWithoutAlpha) {
   EXPECT_NE(r.output.find("Photometric Interpretation: separated"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("InkSet: 1"), std::string::npos) << r.output;  // 1: CMYK
   EXPECT_NE(r.output.find("Ink Names: cyan, magenta, yellow, black"), std::string::npos) << r.output;
-}
-
-// Validates a report against docs/schema/report.schema.json with python3-jsonschema.
-CommandResult validate_report(const fs::path& report) {
-  return run_command({"/usr/bin/python3", "-c",
-                      "import json, sys, jsonschema\n"
-                      "schema = json.load(open(sys.argv[2]))\n"
-                      "jsonschema.Draft202012Validator.check_schema(schema)\n"
-                      "errors = list(jsonschema.Draft202012Validator(schema).iter_errors(json.load(open(sys.argv[1]))))\n"
-                      "for e in errors: print('/'.join(map(str, e.absolute_path)) + ': ' + e.message)\n"
-                      "sys.exit(1 if errors else 0)\n",
-                      report.string(), (source_dir() / "docs/schema/report.schema.json").string()});
 }
 
 TEST_F(OutputReaders, TheReportMatchesItsSchema) {
