@@ -56,6 +56,11 @@ fs::path run_job(const std::string& name, const std::function<void(const fs::pat
   return out;
 }
 
+// Mean grey difference per 10 mm cell below which the fabric shows the marker itself. The fabric
+// is the colorimetric printer's colour and the marker the design's sRGB, so even the right image
+// differs by about 0.04 (0.0402 seen once); the mirror image differs by 0.15 or more.
+constexpr double kSameImage = 0.07;
+
 // Fabric against marker (the roll frame), as printed and read right to left: {same, mirrored}.
 std::pair<double, double> fabric_vs_marker(const fs::path& out) {
   std::ifstream in(out / "report.json");
@@ -80,7 +85,7 @@ TEST(RollFrameOptions, ACarriageStartingOnTheRightLaysTheSameFabric) {
   });
   const auto [same, mirrored] = fabric_vs_marker(out);
   std::printf("carriage origin right: fabric vs marker %.4f, vs its mirror %.4f\n", same, mirrored);
-  EXPECT_LT(same, 0.04);
+  EXPECT_LT(same, kSameImage);
   EXPECT_GT(mirrored, 2 * same);
 }
 
@@ -88,7 +93,7 @@ TEST(RollFrameOptions, SublimationPrintsTheMirrorImage) {
   const fs::path out = run_job("sublimation", [](const fs::path&, json& j) { j["print"]["transfer"] = "sublimation"; });
   const auto [same, mirrored] = fabric_vs_marker(out);
   std::printf("sublimation: fabric vs marker %.4f, vs its mirror %.4f\n", same, mirrored);
-  EXPECT_LT(mirrored, 0.04);
+  EXPECT_LT(mirrored, kSameImage);
   EXPECT_GT(same, 2 * mirrored);
   std::ifstream in(out / "report.json");
   const json rep = json::parse(in);
