@@ -40,6 +40,21 @@ std::optional<std::int64_t> job_id(const httplib::Request& req, httplib::Respons
   return id;
 }
 
+// The output folder of job `id` from the store; answers 503 or 404 (and returns nothing) otherwise.
+std::optional<fs::path> job_out_dir(HttpServer::Impl& im, std::int64_t id, httplib::Response& res) {
+  JobStore* store = im.store();
+  if (!store) {
+    send_error(res, 503, "job store unavailable");
+    return std::nullopt;
+  }
+  auto rec = store->get(id);
+  if (!rec || !*rec) {
+    send_error(res, 404, "no job " + std::to_string(id));
+    return std::nullopt;
+  }
+  return (*rec)->out_dir;
+}
+
 std::string content_type_of(const fs::path& p) {
   const std::string ext = p.extension().string();
   if (ext == ".json") return "application/json";
@@ -113,18 +128,15 @@ void add_job_routes(HttpServer::Impl& im) {
   svr.Get(R"(/api/v1/jobs/(\d+)/files)", [p](const httplib::Request& req, httplib::Response& res) {
     auto id = job_id(req, res);
     if (!id) return;
-    JobStore* store = p->store();
-    if (!store) return send_error(res, 503, "job store unavailable");
-    auto rec = store->get(*id);
-    if (!rec || !*rec) return send_error(res, 404, "no job " + std::to_string(*id));
+    auto out = job_out_dir(*p, *id, res);
+    if (!out) return;
     // Regular files only, symlinks neither followed nor listed.
     json files = json::array();
     std::error_code ec;
-    const fs::path out = (*rec)->out_dir;
-    for (auto it = fs::recursive_directory_iterator(out, ec); !ec && it != fs::recursive_directory_iterator();
+    for (auto it = fs::recursive_directory_iterator(*out, ec); !ec && it != fs::recursive_directory_iterator();
          it.increment(ec)) {
       if (it->is_symlink(ec) || !it->is_regular_file(ec)) continue;
-      files.push_back({{"name", printable_utf8(fs::relative(it->path(), out, ec).generic_string())},
+      files.push_back({{"name", printable_utf8(fs::relative(it->path(), *out, ec).generic_string())},
                        {"bytes", it->file_size(ec)}});
     }
     send_json(res, 200, json{{"id", *id}, {"files", files}});
@@ -133,11 +145,9 @@ void add_job_routes(HttpServer::Impl& im) {
   svr.Get(R"(/api/v1/jobs/(\d+)/files/(.+))", [p](const httplib::Request& req, httplib::Response& res) {
     auto id = job_id(req, res);
     if (!id) return;
-    JobStore* store = p->store();
-    if (!store) return send_error(res, 503, "job store unavailable");
-    auto rec = store->get(*id);
-    if (!rec || !*rec) return send_error(res, 404, "no job " + std::to_string(*id));
-    auto file = job_file_path((*rec)->out_dir, req.matches[2]);
+    auto out = job_out_dir(*p, *id, res);
+    if (!out) return;
+    auto file = job_file_path(*out, req.matches[2]);
     if (!file) return send_error(res, file.error().code == ErrorCode::kUnsafePath ? 400 : 404, file.error().message);
     std::error_code ec;
     const auto size = fs::file_size(*file, ec);
