@@ -100,6 +100,15 @@ Status stage_outputs(PipelineState& ps) {
     for (const nlohmann::json& name : (*checks)["unsewn_pieces"])
       if (name.is_string())
         warnings.push_back("garment: piece '" + name.get<std::string>() + "' hangs unsewn in the 3D garment");
+  // The draped garment only gives previews (unless the job takes its correspondence): a drape
+  // that folded through itself does not fail the job, but its pictures are not to be trusted.
+  if (report.contains("garment") && report["garment"].contains("drape")) {
+    const nlohmann::json& crossed = report["garment"]["drape"]["self_intersections"];
+    if (crossed.is_number_integer() && crossed.get<std::int64_t>() > 0)
+      warnings.push_back("garment: the draped garment has " + std::to_string(crossed.get<std::int64_t>()) +
+                         " self-intersecting triangle pairs: its previews (garment-draped-*.png) show cloth "
+                         "through cloth");
+  }
   if (ps.job.print.transfer == "sublimation")
     warnings.push_back("print.transfer is sublimation: the printer lays the mirror image for transfer paper");
 
