@@ -116,8 +116,8 @@ struct MarkerSpec {
   bool mirror = false;
   double time_limit_s = 5;
   /// Reproducible budget: separator iterations instead of seconds (0: the time limit applies).
-  /// Set by `budget: {"iterations": N}` or `reproducible: true`; the marker then depends on the
-  /// pieces, the marker fields and the seed alone, whatever the machine's load.
+  /// The manifest's default (20,000) unless the job gives seconds or `reproducible: false`; the marker then depends on
+  /// the pieces, the marker fields and the seed alone, whatever the machine's load.
   int iterations = 0;
   int seed = 1;
   std::optional<double> max_length_mm;

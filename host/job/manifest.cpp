@@ -214,12 +214,15 @@ void read_marker(FieldReader m, MarkerSpec& s) {
     if (auto v = b->number("seconds", false, 0, 3600)) s.time_limit_s = *v;
     if (auto v = b->integer("iterations", false, 1, kMaxNestIterations)) s.iterations = *v;
   }
-  if (auto v = m.boolean("reproducible", false); v && *v && s.iterations == 0) {
-    if (m.has("budget") || m.has("time_limit_s"))
-      m.problems().add(m.pointer_of("reproducible"), "a reproducible marker has an iteration budget, not seconds: "
-                                                     "give budget {\"iterations\": N} or no time limit");
-    s.iterations = kDefaultNestIterations;
-  }
+  // Reproducible unless the job gives seconds or says `reproducible: false`: the same job then
+  // nests the same marker on any machine and under any load.
+  const auto reproducible = m.boolean("reproducible", false);
+  const bool gives_seconds = m.has("time_limit_s") || (m.has("budget") && s.iterations == 0);
+  if (reproducible && *reproducible && gives_seconds)
+    m.problems().add(m.pointer_of("reproducible"),
+                     "a reproducible marker has an iteration budget, not seconds: "
+                     "give budget {\"iterations\": N} or no time limit");
+  if (s.iterations == 0 && !gives_seconds && reproducible.value_or(true)) s.iterations = kDefaultNestIterations;
   if (auto v = m.integer("seed", false, 0, 1 << 30)) s.seed = *v;
   if (auto v = m.length_mm("max_length", false, 100, kMaxLengthMm)) s.max_length_mm = *v;
   for (auto& d : m.objects("defects", false)) {

@@ -31,9 +31,17 @@ TEST(MarkerBudget, IterationsSecondsAndReproducible) {
   auto rep = load_marker(R"(, "reproducible": true)");
   ASSERT_TRUE(rep) << rep.error().message;
   EXPECT_EQ(rep->marker.iterations, 20000);
+  // With no budget the marker is reproducible; `reproducible: false` alone gives the default seconds.
   auto plain = load_marker("");
   ASSERT_TRUE(plain);
-  EXPECT_EQ(plain->marker.iterations, 0);
+  EXPECT_EQ(plain->marker.iterations, 20000);
+  auto timed = load_marker(R"(, "reproducible": false)");
+  ASSERT_TRUE(timed);
+  EXPECT_EQ(timed->marker.iterations, 0);
+  EXPECT_DOUBLE_EQ(timed->marker.time_limit_s, 5);
+  auto seconds = load_marker(R"(, "time_limit_s": 3)");
+  ASSERT_TRUE(seconds);
+  EXPECT_EQ(seconds->marker.iterations, 0);
 }
 
 TEST(MarkerBudget, ContradictionsAreRefusedNamingTheField) {
