@@ -77,7 +77,9 @@ TEST(JobOnSimulator, TheFabricShowsTheMarkerAndEverySwathAndCueArrived) {
   }
   const double mean = sum / fabric.size();
   RecordProperty("fabric_vs_marker_mean", std::to_string(mean));
-  EXPECT_LT(mean, 0.04) << "worst cell " << worst;  // 0.022 measured on the flat example
+  // 0.040 measured on the flat example since fabric.png shows the printer's colorimetric fabric
+  // (its white and ink tones), not the sRGB plan's; 0.022 before.
+  EXPECT_LT(mean, 0.05) << "worst cell " << worst;
   EXPECT_LT(worst, 0.25);
   EXPECT_LT(blank_disagree, static_cast<int>(fabric.size() / 100)) << "cells blank on one and printed on the other";
 }
