@@ -16,7 +16,12 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 SOURCE = os.environ.get("TP_SOURCE_DIR") or os.path.abspath(os.path.join(HERE, "../../.."))
 BIN = os.environ.get("TP_BIN_DIR") or os.path.join(SOURCE, "build/bin")
 sys.path.insert(0, os.path.join(SOURCE, "tests/scenarios/jobs/readers"))
-from check_garment_viewer import read_png  # noqa: E402  (the existing PNG reader of the viewer check)
+
+
+def read_png(data):
+    """The viewer check's PNG reader (it imports Selenium, so only loaded when a browser test runs)."""
+    from check_garment_viewer import read_png as reader
+    return reader(data)
 
 CHROMIUM, CHROMEDRIVER = "/usr/bin/chromium", "/usr/bin/chromedriver"
 
@@ -47,7 +52,7 @@ def zip_job(folder, zip_path):
 class Daemon:
     """printd (under printsim unless printer='none') with its own state; .port is the HTTP port."""
 
-    def __init__(self, root, printer="sim", example="top-strokes"):
+    def __init__(self, root, printer="sim", example="top-strokes", extra=()):
         self.root = root
         os.makedirs(root, exist_ok=True)
         self.log_path = os.path.join(root, "printd.log")
@@ -56,7 +61,7 @@ class Daemon:
         with open(conf, "w") as f:
             f.write("# the test gives every setting\n")
         printd = [os.path.join(BIN, "printd"), "--state-dir", self.state, "--out", os.path.join(root, "out"),
-                  "--config", conf, "--listen", "127.0.0.1:0"]
+                  "--config", conf, "--listen", "127.0.0.1:0"] + list(extra)
         if printer == "none":
             cmd = printd + ["--printer", "none"]
         else:
