@@ -52,7 +52,7 @@ def zip_job(folder, zip_path):
 class Daemon:
     """printd (under printsim unless printer='none') with its own state; .port is the HTTP port."""
 
-    def __init__(self, root, printer="sim", example="top-strokes", extra=()):
+    def __init__(self, root, printer="sim", example="top-strokes", extra=(), scenario=None):
         self.root = root
         os.makedirs(root, exist_ok=True)
         self.log_path = os.path.join(root, "printd.log")
@@ -69,7 +69,13 @@ class Daemon:
             subprocess.run([os.path.join(BIN, "printctl"), "printer-model", os.path.join(SOURCE, "examples", example),
                             "--out", model], check=True, stdout=subprocess.DEVNULL)
             cmd = [os.path.join(BIN, "printsim"), "run", "--job-dirs", "--out", os.path.join(root, "out"),
-                   "--printer", model, "--"] + printd
+                   "--printer", model]
+            if scenario:
+                path = os.path.join(root, "scenario.json")
+                with open(path, "w") as f:
+                    f.write(scenario)
+                cmd += ["--scenario", path]
+            cmd += ["--"] + printd
         self.log = open(self.log_path, "w")
         self.proc = subprocess.Popen(cmd, stdout=self.log, stderr=subprocess.STDOUT, start_new_session=True)
         self.port = 0
