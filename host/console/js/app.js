@@ -71,7 +71,7 @@ function refreshAll() {
 // Live updates: job states and stage progress go to the queue (and the open job), printer
 // changes to the printer panel.
 api.followEvents((type, data) => {
-  if (type === "progress") queue.progress(data);
+  if (type === "progress") { queue.progress(data); detail.progress(data); }
   else if (type === "job") { queue.jobEvent(data); detail.jobEvent(data); }
   else if (type === "printer") printerPanel.event(data);
   else if (type === "gap") refreshAll();

@@ -34,6 +34,13 @@ export class Detail {
     if (ev.job_id === this.id && ENDED.has(ev.state)) this.open(this.id, { keepFocus: true });
   }
 
+  /** A `progress` event: when a stage of the job shown begins or ends, its stage table follows. */
+  progress(ev) {
+    if (ev.job_id !== this.id || (ev.state === "running" && ev.fraction !== 0)) return;
+    clearTimeout(this.reload);
+    this.reload = setTimeout(() => this.open(this.id, { keepFocus: true }), 200);
+  }
+
   async open(id, opts) {
     this.id = id;
     if (this.disposeGarment) { this.disposeGarment(); this.disposeGarment = null; }
