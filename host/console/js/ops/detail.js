@@ -43,6 +43,7 @@ export class Detail {
 
   async open(id, opts) {
     this.id = id;
+    const serial = this.serial = (this.serial || 0) + 1;  // a later open wins over one still loading
     if (this.disposeGarment) { this.disposeGarment(); this.disposeGarment = null; }
     this.body.replaceChildren(el("p", { class: "muted" }, `loading job #${id}…`));
     let job, files = [];
@@ -52,7 +53,7 @@ export class Detail {
     } catch (e) {
       if (!job) return this.body.replaceChildren(el("p", { class: "error" }, e.message));
     }
-    if (this.id !== id) return;
+    if (this.serial !== serial) return;
     this.section.dataset.jobId = id;
     this.section.dataset.state = job.state;
     this.render(job, new Set(files));
@@ -100,7 +101,12 @@ export class Detail {
       ["job wall time", duration(r.wall_s)],
     ]));
 
-    // Previews: the marker, the pieces, the garment and the cut file, as far as the job got.
+    // Previews once the job has ended: while it runs its outputs are still being written.
+    if (!ENDED.has(job.state)) {
+      parts.push(el("p", { class: "muted" }, "The marker, pieces, 3D garment and cut file show here when the job ends."));
+      this.body.replaceChildren(...parts);
+      return;
+    }
     if (files.has("marker.png")) parts.push(el("h4", {}, "Marker"), el("div", { class: "preview marker" }, fileImage(id, "marker.png", "marker as printed")));
     const pieces = [...files].filter((f) => /^pieces\/[^/]+\.png$/.test(f)).sort();
     if (pieces.length) parts.push(el("h4", {}, `Pieces (${pieces.length})`), el("div", { class: "pieces" }, pieces.map((p) =>
@@ -123,8 +129,13 @@ export class Detail {
     const view = el("div", { class: "garment-view", id: "detail-garment" });
     const load = async (name) => {
       if (this.disposeGarment) this.disposeGarment();
+      const serial = this.serial;
       const { showGarment } = await import("./garment_view.js");
-      this.disposeGarment = await showGarment(view, id, name);
+      if (serial !== this.serial) return;
+      const dispose = await showGarment(view, id, name);
+      // Opened again meanwhile: this viewer's canvas is no longer on the page.
+      if (serial !== this.serial) dispose();
+      else this.disposeGarment = dispose;
     };
     const choose = objs.length > 1 ? el("label", {}, "shape ", el("select", { onchange: (e) => load(e.target.value) },
       objs.map((o) => el("option", { value: o }, o === "garment.obj" ? "sewn on the body" : "draped")))) : null;
