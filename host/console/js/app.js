@@ -72,7 +72,7 @@ function refreshAll() {
 // changes to the printer panel.
 api.followEvents((type, data) => {
   if (type === "progress") { queue.progress(data); detail.progress(data); }
-  else if (type === "job") { queue.jobEvent(data); detail.jobEvent(data); }
+  else if (type === "job") { queue.jobEvent(data); detail.jobEvent(data); printerPanel.refresh(); }
   else if (type === "printer") printerPanel.event(data);
   else if (type === "gap") refreshAll();
 }, (state) => {
