@@ -66,6 +66,7 @@ def main():
 
         # Progress: sample the job's overall bar until its row reaches the history as done.
         seen, states, faults_seen, start = set(), set(), set(), time.time()
+        shot_taken = False
         final = None
         while time.time() - start < TIMEOUT_S:
             # One script call reads the row at once: rows are replaced as events arrive.
@@ -81,6 +82,9 @@ def main():
                 states.add(state)
                 if value is not None:
                     seen.add(value)
+                    if 30 <= value < 90 and os.environ.get("TP_CONSOLE_SHOTS") and not shot_taken:
+                        shot_taken = True
+                        driver.save_screenshot(os.path.join(os.environ["TP_CONSOLE_SHOTS"], "console-running.png"))
                 if state in ("done", "failed", "cancelled"):
                     final = state
                     break
