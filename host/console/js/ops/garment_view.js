@@ -17,18 +17,8 @@ export async function showGarment(host, id, objName) {
   host.replaceChildren();
   host.dataset.ready = "0";
   const width = Math.max(240, host.clientWidth || 480), height = Math.round(width * 0.8);
-  const renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
-  renderer.setPixelRatio(Math.min(2, window.devicePixelRatio || 1));
-  renderer.setSize(width, height);
-  renderer.domElement.tabIndex = 0;
-  renderer.domElement.setAttribute("aria-label", "3D garment: drag to orbit, wheel to zoom, arrow keys to pan");
-  host.appendChild(renderer.domElement);
+  let renderer = null, frame = 0, disposed = false;
   const scene = new THREE.Scene();
-  scene.background = new THREE.Color(BACKGROUND);
-  scene.add(new THREE.AmbientLight(0xffffff, 0.75));
-  const sun = new THREE.DirectionalLight(0xffffff, 0.35);
-  scene.add(sun);
-  let frame = 0, disposed = false;
   const dispose = () => {
     disposed = true;
     cancelAnimationFrame(frame);
@@ -36,9 +26,18 @@ export async function showGarment(host, id, objName) {
       if (o.geometry) o.geometry.dispose();
       if (o.material) for (const m of [].concat(o.material)) { if (m.map) m.map.dispose(); m.dispose(); }
     });
-    renderer.dispose();
+    if (renderer) renderer.dispose();
   };
   try {
+    // WebGL may be unavailable (a browser without GPU or software rendering): said in the panel.
+    renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
+    renderer.setPixelRatio(Math.min(2, window.devicePixelRatio || 1));
+    renderer.setSize(width, height);
+    renderer.domElement.tabIndex = 0;
+    renderer.domElement.setAttribute("aria-label", "3D garment: drag to orbit, wheel to zoom, arrow keys to pan");
+    host.appendChild(renderer.domElement);
+    scene.background = new THREE.Color(BACKGROUND);
+    scene.add(new THREE.AmbientLight(0xffffff, 0.75));
     // The files come through fetch (a bearer token may be needed), the texture named by map_Kd.
     const mtlName = objName.replace(/\.obj$/, ".mtl");
     const [objText, mtlText] = await Promise.all([api.fetchFile(id, objName), api.fetchFile(id, mtlName).catch(() => "")]);
@@ -63,6 +62,8 @@ export async function showGarment(host, id, objName) {
     const span = Math.max(size.x, size.y, size.z);
     const camera = new THREE.PerspectiveCamera(30, width / height, span / 100, span * 20);
     camera.position.copy(centre).add(new THREE.Vector3(0, 0, 1.25 * span / (2 * Math.tan(Math.PI / 12))));
+    const sun = new THREE.DirectionalLight(0xffffff, 0.35);
+    scene.add(sun);
     sun.position.set(centre.x + span, centre.y + span, centre.z + 2 * span);
     const controls = new OrbitControls(camera, renderer.domElement);
     controls.target.copy(centre);
