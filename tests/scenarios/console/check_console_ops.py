@@ -148,6 +148,22 @@ def main():
         check(bool(driver.find_elements(By.CSS_SELECTOR, "#detail .preview.cut img, #detail .preview.cut svg")),
               "the cut file preview is shown")
         check(bool(driver.find_elements(By.ID, "detail-reprint")), "a done job offers Reprint")
+        # The page's DXF reader (used when a job has no cut.svg) on this job's cut.dxf: as many
+        # contours and points as the file's own entities, counted here from its group codes.
+        drawn = driver.execute_async_script("""
+          const done = arguments[arguments.length - 1];
+          import("/js/ops/cut_preview.js").then(async (m) => {
+            const text = await (await fetch(`/api/v1/jobs/${arguments[0]}/files/cut.dxf`)).text();
+            const svg = m.dxfToSvg(text);
+            done([svg.querySelectorAll("path").length, svg.querySelectorAll("circle").length]);
+          }).catch((e) => done(String(e)));""", job_id)
+        dxf_path = os.path.join(root, "out", "top-strokes", "cut.dxf")
+        lines = [l.strip() for l in open(dxf_path).read().splitlines()]
+        values = [v for c, v in zip(lines[0::2], lines[1::2]) if c == "0"]
+        expect_paths = sum(values.count(k) for k in ("POLYLINE", "LWPOLYLINE", "LINE"))
+        expect_points = sum(values.count(k) for k in ("POINT", "CIRCLE"))
+        print(f"dxf_drawn={drawn} dxf_entities=paths:{expect_paths},points:{expect_points}")
+        check(drawn == [expect_paths, expect_points], "the DXF preview draws every contour and point of cut.dxf")
 
         # The printer panel: the device's counters after the print.
         WebDriverWait(driver, 20).until(lambda d: d.find_elements(By.CSS_SELECTOR, '#printer-counters tr[data-counter="swaths_printed"]'))
