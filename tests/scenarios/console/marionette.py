@@ -4,6 +4,7 @@
 # which Debian does not package.
 import json
 import os
+import shutil
 import socket
 import subprocess
 import tempfile
@@ -113,3 +114,4 @@ class Firefox:
             os.killpg(self.proc.pid, 9)
             self.proc.wait()
         self.log.close()
+        shutil.rmtree(self.profile, ignore_errors=True)
