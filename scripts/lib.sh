@@ -22,6 +22,7 @@ TP_PACKAGES=(
   libtiff-dev   # separated TIFFs (InkSet, InkNames) for separations and the simulator's fabric
   assimp-utils  # independent OBJ/MTL reader for the garment.obj test
   libjs-three chromium chromium-driver python3-selenium  # browser viewer check of garment.obj
+  firefox-esr  # the operator console's check in Firefox (driven over Marionette; docs/console.md)
   argyll  # printctl calibrate: targen, colprof, profcheck (docs/colour.md)
   libcpp-httplib-dev libssl-dev openssl  # printd's HTTP API (TLS via OpenSSL); the tests make a cert
   systemd dpkg-dev wrk  # systemd-analyze verify and dpkg-shlibdeps for the .deb test; HTTP load figures

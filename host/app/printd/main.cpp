@@ -5,6 +5,7 @@
 #include <atomic>
 #include <csignal>
 #include <cstdio>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,19 @@
 namespace {
 std::atomic<bool> g_stop{false};
 void on_signal(int) { g_stop.store(true); }
+
+// The console's assets when --console-dir is not given: <bindir>/../share/printd/console (the
+// installed layout, and the build tree's link to host/console), else the packaged place.
+std::filesystem::path default_console_dir() {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+  if (!ec) {
+    const fs::path beside = exe.parent_path().parent_path() / "share/printd/console";
+    if (fs::is_regular_file(beside / "index.html", ec)) return beside;
+  }
+  return "/usr/share/printd/console";
+}
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -64,6 +78,11 @@ int main(int argc, char** argv) {
       ->capture_default_str()->check(CLI::Range(100, 600000));
   app.add_option("--http-threads", cfg.http.threads, "HTTP connections served at once (event streams included)")
       ->capture_default_str()->check(CLI::Range(2, 1024));
+  app.add_option("--console-dir", cfg.http.console_dir,
+                 "The operator console's assets, served at / (default <bindir>/../share/printd/console, "
+                 "else /usr/share/printd/console)");
+  app.add_option("--three-dir", cfg.http.three_dir, "three.js (libjs-three) served at /vendor/three/")
+      ->capture_default_str();
   app.add_option("--event-log-size", cfg.event_log_size, "Events kept for Last-Event-ID replay")
       ->capture_default_str()->check(CLI::Range(16, 1000000));
   std::vector<std::string> limits;
@@ -78,6 +97,7 @@ int main(int argc, char** argv) {
     }
   }
 
+  if (cfg.http.console_dir.empty()) cfg.http.console_dir = default_console_dir();
   cfg.http.max_upload_bytes = upload_mb << 20;
   cfg.http.write_timeout_ms = cfg.http.read_timeout_ms;
   cfg.state_dir = state_dir;

@@ -93,6 +93,9 @@ namespace {
 // Bearer tokens: a read-scoped token may only GET; anything else needs an admin token.
 httplib::Server::HandlerResponse check_token(HttpServer::Impl& im, const httplib::Request& req, httplib::Response& res) {
   if (!im.require_token) return httplib::Server::HandlerResponse::Unhandled;
+  // The console's page and its scripts are public files; the data they fetch is under /api/.
+  if ((req.method == "GET" || req.method == "HEAD") && req.path.rfind("/api/", 0) != 0)
+    return httplib::Server::HandlerResponse::Unhandled;
   const std::string auth = req.get_header_value("Authorization");
   const std::string prefix = "Bearer ";
   TokenStore* tokens = im.tokens();
@@ -196,6 +199,7 @@ Result<std::unique_ptr<HttpServer>> HttpServer::start(const HttpConfig& config, 
   http::add_job_routes(*im);
   http::add_upload_route(*im);
   http::add_event_routes(*im);
+  http::add_static_routes(*im);
 
   if (addr->port == 0) {
     im->port = svr.bind_to_any_port(addr->host);

@@ -29,6 +29,8 @@ struct HttpConfig {
   int write_timeout_ms = 10000;           ///< and keep reading what it asked for
   int threads = 64;                       ///< connections served at once; more wait for a thread
   int sse_keepalive_ms = 15000;           ///< a comment line on an idle event stream this often
+  std::filesystem::path console_dir;      ///< the operator console's assets (docs/console.md); empty = none
+  std::filesystem::path three_dir = "/usr/share/javascript/three";  ///< libjs-three, served at /vendor/three/
 };
 
 /// A parsed --listen value.

@@ -47,6 +47,9 @@ void add_job_routes(HttpServer::Impl& im);
 void add_upload_route(HttpServer::Impl& im);
 /// GET /api/v1/events (Server-Sent Events) and GET /api/v1/printer.
 void add_event_routes(HttpServer::Impl& im);
+/// GET / and the console's assets (HttpConfig::console_dir), GET /vendor/three/... (three_dir).
+/// Registered last: its catch-all takes every GET outside /api/ no other route matched.
+void add_static_routes(HttpServer::Impl& im);
 
 }  // namespace http
 }  // namespace tp::host
