@@ -12,6 +12,7 @@
 #include "host/pipeline/garment_files.h"
 #include "host/pipeline/internal/output_files.h"
 #include "host/pipeline/internal/pipeline_state.h"
+#include "host/pipeline/internal/printed_seams.h"
 #include "rip/image/image_io.h"
 
 namespace tp::host::internal {
@@ -120,6 +121,33 @@ Status stage_outputs(PipelineState& ps) {
     ps.report["seams"]["count"] = c->seam_list.size();
     ps.report["allowance"] = stats_json(c->allowance);
     ps.report["allowance"]["count"] = c->allowance_list.size();
+
+    // The same sample pairs on what was printed (docs/colour.md): only a print can show a piece
+    // placed, turned or fed off its planned place.
+    auto printed = measure_printed_seams(ps, kContinuityDpi);
+    if (!printed) return fail(printed.error());
+    if (printed->report) {
+      const geometry::ContinuityReport& pr = *printed->report;
+      ps.report["seams_printed"] = stats_json(pr.seams);
+      ps.report["seams_printed"]["count"] = pr.seam_list.size();
+      ps.report["allowance_printed"] = stats_json(pr.allowance);
+      ps.report["allowance_printed"]["count"] = pr.allowance_list.size();
+      for (const char* key : {"seams_printed", "allowance_printed"}) {
+        ps.report[key]["dpi"] = kContinuityDpi;
+        ps.report[key]["aperture_mm"] = kPrintedAperture_mm;
+        ps.report[key]["fabric"] = printed->fabric_lab.filename().string();
+      }
+      nlohmann::json worst = nlohmann::json::array();
+      for (const geometry::SeamContinuity& s : pr.seam_list)
+        worst.push_back({{"piece_a", s.piece_a}, {"edge_a", s.edge_a}, {"piece_b", s.piece_b}, {"edge_b", s.edge_b},
+                         {"samples", s.de00.samples}, {"de00_mean", s.de00.mean}, {"de00_p95", s.de00.p95}});
+      ps.report["seams_printed"]["list"] = worst;
+    } else {
+      for (const char* key : {"seams_printed", "allowance_printed"}) {
+        ps.report[key] = stats_json({});
+        ps.report[key]["reason"] = printed->reason;
+      }
+    }
   }
   return {};
 }
