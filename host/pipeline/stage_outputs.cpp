@@ -10,6 +10,7 @@
 #include "geometry/design/render_piece_image.h"
 #include "host/common/atomic_file.h"
 #include "host/pipeline/garment_files.h"
+#include "host/pipeline/internal/gamut_report.h"
 #include "host/pipeline/internal/output_files.h"
 #include "host/pipeline/internal/pipeline_state.h"
 #include "host/pipeline/internal/printed_seams.h"
@@ -145,11 +146,13 @@ Status stage_outputs(PipelineState& ps) {
     } else {
       for (const char* key : {"seams_printed", "allowance_printed"}) {
         ps.report[key] = stats_json({});
+        ps.report[key]["count"] = 0;
         ps.report[key]["reason"] = printed->reason;
       }
     }
   }
-  return {};
+  // What of the design the printer cannot reproduce, and the soft proof that shows it.
+  return report_gamut(ps);
 }
 
 }  // namespace tp::host::internal
