@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "geometry/allowance/finishing.h"
-#include "geometry/continuity/ciede2000.h"
 #include "geometry/common/error.h"
+#include "geometry/continuity/ciede2000.h"
 #include "geometry/design/piece_renderer.h"
 #include "geometry/garment/garment.h"
 #include "geometry/pattern/pattern.h"

@@ -29,15 +29,17 @@ Status report_gamut(PipelineState& ps) {
     if (!model) return fail(model.error());
     std::vector<std::string> inks;
     for (const auto& ink : model->inks) inks.push_back(ink.name);
-    if (inks == std::vector<std::string>{"cyan", "magenta", "yellow", "black"} && fs::exists(rip::kDefaultCmykProfilePath)) {
+    if (inks == std::vector<std::string>{"cyan", "magenta", "yellow", "black"} &&
+        fs::exists(rip::kDefaultCmykProfilePath)) {
       profile = rip::kDefaultCmykProfilePath;
       source = "default";
     }
   }
   auto& g = ps.report["gamut"];
   if (profile.empty()) {
-    g = {{"reason", "no printer profile to proof against: the printer's inks are not CMYK and the job names none "
-                    "(print.calibration or print.icc_profile)"}};
+    g = {{"reason",
+          "no printer profile to proof against: the printer's inks are not CMYK and the job names none "
+          "(print.calibration or print.icc_profile)"}};
     return {};
   }
   const fs::path marker = ps.options.out_dir / "marker.png";
@@ -46,9 +48,13 @@ Status report_gamut(PipelineState& ps) {
   geometry::ImageRgba8 proof, overlay;
   auto s = rip::soft_proof(*design, profile, proof, &overlay);
   if (!s) return fail(ErrorCode::kPipeline, "gamut: " + s.error().message);
-  if (auto st = write_png_checked(ps.options.out_dir / "marker-proof.png", proof, rip::PngChannels::kRgba, p.preview_dpi); !st)
+  if (auto st =
+          write_png_checked(ps.options.out_dir / "marker-proof.png", proof, rip::PngChannels::kRgba, p.preview_dpi);
+      !st)
     return st;
-  if (auto st = write_png_checked(ps.options.out_dir / "marker-gamut.png", overlay, rip::PngChannels::kRgba, p.preview_dpi); !st)
+  if (auto st =
+          write_png_checked(ps.options.out_dir / "marker-gamut.png", overlay, rip::PngChannels::kRgba, p.preview_dpi);
+      !st)
     return st;
   g = {{"profile", profile.string()},
        {"profile_source", source},

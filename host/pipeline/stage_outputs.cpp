@@ -140,8 +140,13 @@ Status stage_outputs(PipelineState& ps) {
       }
       nlohmann::json worst = nlohmann::json::array();
       for (const geometry::SeamContinuity& s : pr.seam_list)
-        worst.push_back({{"piece_a", s.piece_a}, {"edge_a", s.edge_a}, {"piece_b", s.piece_b}, {"edge_b", s.edge_b},
-                         {"samples", s.de00.samples}, {"de00_mean", s.de00.mean}, {"de00_p95", s.de00.p95}});
+        worst.push_back({{"piece_a", s.piece_a},
+                         {"edge_a", s.edge_a},
+                         {"piece_b", s.piece_b},
+                         {"edge_b", s.edge_b},
+                         {"samples", s.de00.samples},
+                         {"de00_mean", s.de00.mean},
+                         {"de00_p95", s.de00.p95}});
       ps.report["seams_printed"]["list"] = worst;
     } else {
       for (const char* key : {"seams_printed", "allowance_printed"}) {

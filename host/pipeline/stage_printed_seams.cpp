@@ -91,7 +91,8 @@ Result<geometry::Marker> printed_roll(const PipelineState& ps) {
     pl.rotation_deg += m->rotation_deg;
     placed = true;
   }
-  if (!placed) return fail(ErrorCode::kInvalidArgument, "misplace (test hook): piece '" + m->piece + "' is not on the roll");
+  if (!placed)
+    return fail(ErrorCode::kInvalidArgument, "misplace (test hook): piece '" + m->piece + "' is not on the roll");
   return roll;
 }
 
@@ -100,11 +101,13 @@ Result<PrintedSeams> measure_printed_seams_on(const PipelineState& ps, double dp
   out.fabric_lab = fabric_lab;
   auto img = rip::read_image3f(fabric_lab);
   if (!img) return fail(ErrorCode::kPipeline, "printed seams: " + img.error().message);
-  if (!(img->px_per_mm > 0)) return fail(ErrorCode::kPipeline, "printed seams: " + fabric_lab.string() + ": no resolution");
+  if (!(img->px_per_mm > 0))
+    return fail(ErrorCode::kPipeline, "printed seams: " + fabric_lab.string() + ": no resolution");
   // Each piece goes to the roll by its (first) placement in the plan, not where it was printed.
   std::vector<std::optional<geometry::Affine2>> to_roll(ps.pattern.pieces.size());
   for (const geometry::PiecePlacement& pl : ps.roll.placements)
-    if (pl.piece >= 0 && static_cast<std::size_t>(pl.piece) < to_roll.size() && !to_roll[static_cast<std::size_t>(pl.piece)])
+    if (pl.piece >= 0 && static_cast<std::size_t>(pl.piece) < to_roll.size() &&
+        !to_roll[static_cast<std::size_t>(pl.piece)])
       to_roll[static_cast<std::size_t>(pl.piece)] = pl.piece_to_roll();
   const rip::Image3f& image = *img;
   geometry::ContinuityOptions options;

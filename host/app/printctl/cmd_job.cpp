@@ -5,8 +5,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
-#include <memory>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -139,7 +139,10 @@ void register_job_commands(CLI::App& app) {
       bool ok = true;
       for (int k = 2; k >= 0 && ok; --k) {
         const std::size_t at = rest.rfind(':');
-        if (at == std::string::npos) { ok = false; break; }
+        if (at == std::string::npos) {
+          ok = false;
+          break;
+        }
         char* end = nullptr;
         const std::string field = rest.substr(at + 1);
         v[k] = std::strtod(field.c_str(), &end);
@@ -147,7 +150,9 @@ void register_job_commands(CLI::App& app) {
         rest.resize(at);
       }
       if (!ok || rest.empty())
-        die(Error{ErrorCode::kInvalidArgument, "--debug-misplace '" + run_misplace + "': expected PIECE:DX_MM:DY_MM:DEG"}, 1);
+        die(Error{ErrorCode::kInvalidArgument,
+                  "--debug-misplace '" + run_misplace + "': expected PIECE:DX_MM:DY_MM:DEG"},
+            1);
       m.piece = rest;
       m.dx_mm = v[0];
       m.dy_mm = v[1];

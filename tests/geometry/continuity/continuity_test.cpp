@@ -96,7 +96,8 @@ TEST(Continuity, ASamplerReadsTheSamePairsAndMaySkipSome) {
   o.sample = [&](int piece, Vec2 p) -> std::optional<Lab> {
     ++calls;
     Rgba8 px{};
-    (*r)->render(piece, Affine2{mm_per_px, 0, p.x - 0.5 * mm_per_px, 0, -mm_per_px, p.y + 0.5 * mm_per_px}, 1, 1, &px, 1);
+    (*r)->render(piece, Affine2{mm_per_px, 0, p.x - 0.5 * mm_per_px, 0, -mm_per_px, p.y + 0.5 * mm_per_px}, 1, 1, &px,
+                 1);
     return srgb_over_white_to_lab(px);
   };
   auto same = measure_continuity(g.pattern, g.garment, f, **r, 100, o);

@@ -18,8 +18,8 @@ using nlohmann::json;
 
 json run_top(const std::string& name, const std::vector<std::string>& extra) {
   const fs::path out = scratch_dir("printed-seams-" + name) / "out";
-  std::vector<std::string> cmd{(bin_dir() / "printctl").string(), "run", (source_dir() / "examples/top-strokes").string(),
-                               "--out", out.string()};
+  std::vector<std::string> cmd{(bin_dir() / "printctl").string(), "run",
+                               (source_dir() / "examples/top-strokes").string(), "--out", out.string()};
   cmd.insert(cmd.end(), extra.begin(), extra.end());
   auto r = run_command(cmd);
   EXPECT_EQ(r.exit_code, 0) << r.output;
@@ -61,7 +61,8 @@ TEST(PrintedSeams, AMisplacedPieceShowsOnThePrintNotOnTheContone) {
     const double worst = worst_seam_with(off, "front_l");
     EXPECT_GT(worst, 2.5);
     EXPECT_GT(worst, 5 * planned_worst);
-    EXPECT_GT(off["allowance_printed"]["de00_mean"].get<double>(), planned["allowance_printed"]["de00_mean"].get<double>());
+    EXPECT_GT(off["allowance_printed"]["de00_mean"].get<double>(),
+              planned["allowance_printed"]["de00_mean"].get<double>());
   }
 
   // The gamut section, through the default CMYK profile, with its soft proof beside marker.png.
@@ -77,8 +78,8 @@ TEST(PrintedSeams, AMisplacedPieceShowsOnThePrintNotOnTheContone) {
 
 TEST(PrintedSeams, ABadMisplaceHookIsRefused) {
   const fs::path out = scratch_dir("printed-seams-bad") / "out";
-  auto r = run_command({(bin_dir() / "printctl").string(), "run", (source_dir() / "examples/top-strokes").string(), "--out",
-                        out.string(), "--debug-misplace", "front_l:3:x:0", "--printer", "none"});
+  auto r = run_command({(bin_dir() / "printctl").string(), "run", (source_dir() / "examples/top-strokes").string(),
+                        "--out", out.string(), "--debug-misplace", "front_l:3:x:0", "--printer", "none"});
   EXPECT_NE(r.exit_code, 0);
   EXPECT_NE(r.output.find("PIECE:DX_MM:DY_MM:DEG"), std::string::npos) << r.output;
 }
