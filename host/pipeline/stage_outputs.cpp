@@ -135,7 +135,7 @@ Status stage_outputs(PipelineState& ps) {
       ps.report["allowance_printed"]["count"] = pr.allowance_list.size();
       for (const char* key : {"seams_printed", "allowance_printed"}) {
         ps.report[key]["dpi"] = kContinuityDpi;
-        ps.report[key]["aperture_mm"] = kPrintedAperture_mm;
+        ps.report[key]["aperture_mm"] = printed_aperture_mm(ps.job.print.dpi);
         ps.report[key]["fabric"] = printed->fabric_lab.filename().string();
       }
       nlohmann::json worst = nlohmann::json::array();

@@ -1,5 +1,6 @@
 // host/pipeline/stage_printed_seams.cpp: seams and allowances measured on the printed fabric: the
 // fabric's CIELAB image, descreened by an aperture average, read where the marker put each piece.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <fstream>
@@ -38,8 +39,8 @@ std::vector<fs::path> fabric_dirs(const fs::path& printsim_dir, std::int64_t job
 }
 
 // The fabric image averaged in XYZ over a square aperture centred on a roll point (mm).
-std::optional<geometry::Lab> aperture_lab(const rip::Image3f& img, geometry::Vec2 roll_mm) {
-  const double half_px = 0.5 * kPrintedAperture_mm * img.px_per_mm;
+std::optional<geometry::Lab> aperture_lab(const rip::Image3f& img, geometry::Vec2 roll_mm, double aperture_mm) {
+  const double half_px = 0.5 * aperture_mm * img.px_per_mm;
   const double cx = roll_mm.x * img.px_per_mm, cy = roll_mm.y * img.px_per_mm;
   const double x0 = cx - half_px, x1 = cx + half_px, y0 = cy - half_px, y1 = cy + half_px;
   if (x0 < 0 || y0 < 0 || x1 > img.width_px || y1 > img.height_px) return std::nullopt;
@@ -64,6 +65,11 @@ std::optional<geometry::Lab> aperture_lab(const rip::Image3f& img, geometry::Vec
 }
 
 }  // namespace
+
+double printed_aperture_mm(int printer_dpi) {
+  return printer_dpi > 0 ? std::max(kPrintedApertureMin_mm, kPrintedApertureDrops * 25.4 / printer_dpi)
+                         : kPrintedApertureMin_mm;
+}
 
 Result<geometry::Marker> printed_roll(const PipelineState& ps) {
   geometry::Marker roll = ps.roll;
@@ -110,11 +116,12 @@ Result<PrintedSeams> measure_printed_seams_on(const PipelineState& ps, double dp
         !to_roll[static_cast<std::size_t>(pl.piece)])
       to_roll[static_cast<std::size_t>(pl.piece)] = pl.piece_to_roll();
   const rip::Image3f& image = *img;
+  const double aperture = printed_aperture_mm(ps.job.print.dpi);
   geometry::ContinuityOptions options;
   options.sample = [&](int piece, geometry::Vec2 at_mm) -> std::optional<geometry::Lab> {
     if (piece < 0 || static_cast<std::size_t>(piece) >= to_roll.size() || !to_roll[static_cast<std::size_t>(piece)])
       return std::nullopt;
-    return aperture_lab(image, to_roll[static_cast<std::size_t>(piece)]->apply(at_mm));
+    return aperture_lab(image, to_roll[static_cast<std::size_t>(piece)]->apply(at_mm), aperture);
   };
   auto c = geometry::measure_continuity(ps.pattern, *ps.garment, ps.finishing, *ps.renderer, dpi, options);
   if (!c) return fail(ErrorCode::kPipeline, "printed seams: " + c.error().message);

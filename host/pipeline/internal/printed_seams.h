@@ -14,9 +14,11 @@
 namespace tp::host::internal {
 
 /// Side of the square aperture the printed fabric is averaged over at each sample point (in XYZ):
-/// the descreening low-pass, wide enough to average out the screen at every printer resolution
-/// the project plans for (a few drops of 600 dpi and up).
-inline constexpr double kPrintedAperture_mm = 1.0;
+/// the descreening low-pass at the printer's resolution, kPrintedApertureDrops drop pitches and
+/// never less than kPrintedApertureMin_mm (2 mm at 150 dpi, 1 mm at 300 dpi and finer).
+inline constexpr double kPrintedApertureDrops = 12;
+inline constexpr double kPrintedApertureMin_mm = 1.0;
+[[nodiscard]] double printed_aperture_mm(int printer_dpi);
 
 /// What the printed-seam measure found: the figures, or why there are none.
 struct PrintedSeams {
