@@ -7,6 +7,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "tests/scenarios/jobs/report_schema.h"
 #include "tests/scenarios/jobs/run_command.h"
 #include "tests/support/paths.h"
 
@@ -74,6 +75,18 @@ TEST(PrintedSeams, AMisplacedPieceShowsOnThePrintNotOnTheContone) {
   EXPECT_GT(g["worst_de00"].get<double>(), 0.0);
   EXPECT_TRUE(fs::is_regular_file(fs::path(planned["_out"].get<std::string>()) / "marker-proof.png"));
   EXPECT_TRUE(fs::is_regular_file(fs::path(planned["_out"].get<std::string>()) / "marker-gamut.png"));
+}
+
+TEST(PrintedSeams, WithoutAPrintedFabricTheFiguresSayWhy) {
+  const json rep = run_top("no-printer", {"--printer", "none"});
+  ASSERT_EQ(rep["state"], "done");
+  EXPECT_TRUE(rep["seams"]["de00_mean"].is_number());
+  EXPECT_TRUE(rep["seams_printed"]["de00_mean"].is_null());
+  EXPECT_EQ(rep["seams_printed"]["samples"], 0);
+  EXPECT_NE(rep["seams_printed"]["reason"].get<std::string>().find("not printsim"), std::string::npos);
+  EXPECT_TRUE(rep["allowance_printed"]["reason"].is_string());
+  const auto v = validate_report(fs::path(rep["_out"].get<std::string>()) / "report.json");
+  EXPECT_EQ(v.exit_code, 0) << v.output;
 }
 
 TEST(PrintedSeams, ABadMisplaceHookIsRefused) {
