@@ -148,6 +148,18 @@ Status stage_outputs(PipelineState& ps) {
                          {"de00_mean", s.de00.mean},
                          {"de00_p95", s.de00.p95}});
       ps.report["seams_printed"]["list"] = worst;
+      // The largest few sample pairs, piece-local mm: where on the garment to look.
+      for (const auto& [key, samples] : {std::pair{"seams_printed", &pr.worst_seam_samples},
+                                         std::pair{"allowance_printed", &pr.worst_allowance_samples}}) {
+        nlohmann::json w = nlohmann::json::array();
+        for (const geometry::SamplePair& sp : *samples)
+          w.push_back({{"de00", sp.de00},
+                       {"piece_a", sp.piece_a},
+                       {"at_a_mm", {sp.at_a_mm.x, sp.at_a_mm.y}},
+                       {"piece_b", sp.piece_b},
+                       {"at_b_mm", {sp.at_b_mm.x, sp.at_b_mm.y}}});
+        ps.report[key]["worst_samples"] = w;
+      }
     } else {
       for (const char* key : {"seams_printed", "allowance_printed"}) {
         ps.report[key] = stats_json({});
