@@ -64,6 +64,28 @@ std::optional<geometry::Lab> aperture_lab(const rip::Image3f& img, geometry::Vec
   return geometry::Lab{lab.l, lab.a, lab.b};
 }
 
+// Even-odd point in polygon.
+bool inside(const geometry::Polygon& poly, geometry::Vec2 p) {
+  bool in = false;
+  for (std::size_t i = 0, j = poly.size() - 1; i < poly.size(); j = i++) {
+    const geometry::Vec2 a = poly[i], b = poly[j];
+    if ((a.y > p.y) != (b.y > p.y) && p.x < (b.x - a.x) * (p.y - a.y) / (b.y - a.y) + a.x) in = !in;
+  }
+  return in;
+}
+
+double distance_to(const geometry::Polygon& poly, geometry::Vec2 p) {
+  double best = 1e300;
+  for (std::size_t i = 0; i < poly.size(); ++i) {
+    const geometry::Vec2 a = poly[i], b = poly[(i + 1) % poly.size()];
+    const geometry::Vec2 d = b - a;
+    const double len2 = geometry::dot(d, d);
+    const double t = len2 > 0 ? std::clamp(geometry::dot(p - a, d) / len2, 0.0, 1.0) : 0.0;
+    best = std::min(best, geometry::norm(p - (a + d * t)));
+  }
+  return best;
+}
+
 }  // namespace
 
 double printed_aperture_mm(int printer_dpi) {
@@ -117,10 +139,24 @@ Result<PrintedSeams> measure_printed_seams_on(const PipelineState& ps, double dp
       to_roll[static_cast<std::size_t>(pl.piece)] = pl.piece_to_roll();
   const rip::Image3f& image = *img;
   const double aperture = printed_aperture_mm(ps.job.print.dpi);
+  // The aperture is wider than a contone pixel: it must not reach past the cut line (unprinted
+  // fabric, another piece) nor around a corner of the seam line, where the allowance mitres between
+  // two sources and the two sides of a seam cover different prints.
+  std::vector<std::vector<geometry::Vec2>> corners(ps.pattern.pieces.size());
+  for (std::size_t p = 0; p < corners.size(); ++p)
+    for (const geometry::Edge& e : ps.pattern.pieces[p].edges)
+      if (!e.points_mm.empty()) corners[p].insert(corners[p].end(), {e.points_mm.front(), e.points_mm.back()});
+  auto clear_of_edges = [&](int piece, geometry::Vec2 at) {
+    for (geometry::Vec2 c : corners[static_cast<std::size_t>(piece)])
+      if (geometry::norm(at - c) < kPrintedCornerClearance * aperture) return false;
+    const geometry::Polygon& cut = ps.renderer->cut_outline_mm(piece);
+    return inside(cut, at) && distance_to(cut, at) >= 0.75 * aperture;
+  };
   geometry::ContinuityOptions options;
   options.sample = [&](int piece, geometry::Vec2 at_mm) -> std::optional<geometry::Lab> {
     if (piece < 0 || static_cast<std::size_t>(piece) >= to_roll.size() || !to_roll[static_cast<std::size_t>(piece)])
       return std::nullopt;
+    if (!clear_of_edges(piece, at_mm)) return std::nullopt;
     return aperture_lab(image, to_roll[static_cast<std::size_t>(piece)]->apply(at_mm), aperture);
   };
   auto c = geometry::measure_continuity(ps.pattern, *ps.garment, ps.finishing, *ps.renderer, dpi, options);

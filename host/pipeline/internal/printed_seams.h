@@ -19,6 +19,9 @@ namespace tp::host::internal {
 inline constexpr double kPrintedApertureDrops = 12;
 inline constexpr double kPrintedApertureMin_mm = 1.0;
 [[nodiscard]] double printed_aperture_mm(int printer_dpi);
+/// Sample points closer than this many apertures to a corner of their piece's seam line (an edge's
+/// end), or closer than 0.75 aperture to its cut line, are not read on the fabric.
+inline constexpr double kPrintedCornerClearance = 2.0;
 
 /// What the printed-seam measure found: the figures, or why there are none.
 struct PrintedSeams {
