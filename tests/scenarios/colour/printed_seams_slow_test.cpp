@@ -42,7 +42,9 @@ TEST(PrintedSeams, AMisplacedPieceShowsOnThePrintNotOnTheContone) {
   const json planned = run_top("planned", {});
   ASSERT_EQ(planned["state"], "done");
   ASSERT_TRUE(planned["seams_printed"]["de00_mean"].is_number()) << planned["seams_printed"].dump();
-  EXPECT_EQ(planned["seams_printed"]["samples"], planned["seams"]["samples"]);
+  // The same pairs, less those whose aperture would reach a seam-line corner or the cut line.
+  EXPECT_LE(planned["seams_printed"]["samples"].get<int>(), planned["seams"]["samples"].get<int>());
+  EXPECT_GT(planned["seams_printed"]["samples"].get<int>(), 0.8 * planned["seams"]["samples"].get<int>());
   EXPECT_EQ(planned["seams_printed"]["fabric"], "fabric-lab.tif");
   EXPECT_GT(planned["allowance_printed"]["samples"].get<int>(), 1000);
   // Printed as planned, the seams match on the fabric too.
