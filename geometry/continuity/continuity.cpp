@@ -6,6 +6,7 @@
 #include <map>
 #include <nlohmann/json.hpp>
 #include <numeric>
+#include <optional>
 #include <tuple>
 
 #include "geometry/allowance/allowance_widths.h"
@@ -41,10 +42,22 @@ Rgba8 pixel_at(const PieceRenderer& r, int piece, Vec2 p, double mm_per_px) {
 constexpr size_t kWorstKept = 8;
 
 // Renders both pixels, returns their difference and keeps the pair if it is among the worst.
-double difference(const Pattern& pattern, const PieceRenderer& r, int pa, Vec2 a, int pb, Vec2 b, double mm_per_px,
-                  std::vector<SamplePair>& worst) {
-  const Rgba8 ca = pixel_at(r, pa, a, mm_per_px), cb = pixel_at(r, pb, b, mm_per_px);
-  const double de = ciede2000(srgb_over_white_to_lab(ca), srgb_over_white_to_lab(cb));
+// Without a sampler of its own the colours are the renderer's; a sampler may skip a pair (nullopt).
+std::optional<double> difference(const Pattern& pattern, const PieceRenderer& r, const ContinuityOptions& o, int pa,
+                                 Vec2 a, int pb, Vec2 b, double mm_per_px, std::vector<SamplePair>& worst) {
+  Rgba8 ca{}, cb{};
+  double de = 0;
+  if (o.sample) {
+    const auto la = o.sample(pa, a);
+    if (!la) return std::nullopt;
+    const auto lb = o.sample(pb, b);
+    if (!lb) return std::nullopt;
+    de = ciede2000(*la, *lb);
+  } else {
+    ca = pixel_at(r, pa, a, mm_per_px);
+    cb = pixel_at(r, pb, b, mm_per_px);
+    de = ciede2000(srgb_over_white_to_lab(ca), srgb_over_white_to_lab(cb));
+  }
   if (worst.size() < kWorstKept || de > worst.back().de00) {
     worst.push_back({de, pattern.pieces[static_cast<size_t>(pa)].name, pattern.pieces[static_cast<size_t>(pb)].name, a, b, ca, cb});
     std::sort(worst.begin(), worst.end(), [](const SamplePair& x, const SamplePair& y) { return x.de00 > y.de00; });
@@ -120,14 +133,16 @@ Result<ContinuityReport> measure_continuity(const Pattern& pattern, const Garmen
       for (int i = 0; i < n; ++i) {
         const double t = (i + 0.5) / n;
         const double tb = seg.partner_reversed ? 1 - t : t;
-        const double de = difference(pattern, renderer, p, a0 + (a1 - a0) * t, seg.partner_piece, b0 + (b1 - b0) * tb,
-                                     mm_per_px, report.worst_seam_samples);
-        bucket.push_back(de);
-        all_seams.push_back(de);
+        const auto de = difference(pattern, renderer, options, p, a0 + (a1 - a0) * t, seg.partner_piece,
+                                   b0 + (b1 - b0) * tb, mm_per_px, report.worst_seam_samples);
+        if (!de) continue;
+        bucket.push_back(*de);
+        all_seams.push_back(*de);
       }
     }
   }
   for (auto& [key, values] : seams) {
+    if (values.empty()) continue;
     const auto [p, e, q, f] = key;
     report.seam_list.push_back({pattern.pieces[static_cast<size_t>(p)].name, edge_name(pattern, p, e),
                                 pattern.pieces[static_cast<size_t>(q)].name, edge_name(pattern, q, f), summarise(values)});
@@ -189,9 +204,11 @@ Result<ContinuityReport> measure_continuity(const Pattern& pattern, const Garmen
               astride |= n.piece != s.piece || n.category != s.category;
             }
             if (astride) continue;
-            const double de = difference(pattern, renderer, p, x, s.piece, s.position_mm, mm_per_px, report.worst_allowance_samples);
-            groups[{seg.edge, s.piece, s.category}].push_back(de);
-            all_allowance.push_back(de);
+            const auto de = difference(pattern, renderer, options, p, x, s.piece, s.position_mm, mm_per_px,
+                                       report.worst_allowance_samples);
+            if (!de) continue;
+            groups[{seg.edge, s.piece, s.category}].push_back(*de);
+            all_allowance.push_back(*de);
           }
         }
       }

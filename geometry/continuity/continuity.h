@@ -4,11 +4,14 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "geometry/allowance/finishing.h"
 #include "geometry/common/error.h"
+#include "geometry/continuity/ciede2000.h"
 #include "geometry/design/piece_renderer.h"
 #include "geometry/garment/garment.h"
 #include "geometry/pattern/pattern.h"
@@ -61,6 +64,10 @@ struct ContinuityOptions {
   /// at each depth, at least 0.4 mm).
   double spacing_mm = 0;
   std::vector<double> depth_fractions{0.25, 0.5, 0.75};  ///< allowance sample depths, of its width
+  /// Where the colours come from. Empty: the renderer's contone pixel at the dpi, over white.
+  /// Set: the colour at a piece-local point (mm) as something else shows it, for example the
+  /// printed fabric read where the marker placed the piece; nullopt skips the sample pair.
+  std::function<std::optional<Lab>(int piece, Vec2 at_mm)> sample;
 };
 
 /// Samples every stitched seam at pairs of pixels centred on the same 3D point in both pieces,
@@ -69,6 +76,7 @@ struct ContinuityOptions {
 /// Samples where the allowance is cut away (outside the cut outline, folded-over concave parts),
 /// where the source point had to be clamped into a narrow partner, whose pixel straddles a
 /// line where the source changes (mitres at corners), or on a printed label are skipped.
+/// With `options.sample` the same pairs are read through it instead (the printed-seam figures).
 /// Fails when the garment does not match the pattern or dpi is not positive.
 [[nodiscard]] Result<ContinuityReport> measure_continuity(const Pattern& pattern, const Garment& garment,
                                                          const Finishing& finishing, const PieceRenderer& renderer,

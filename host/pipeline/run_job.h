@@ -47,6 +47,15 @@ struct RunOptions {
   /// The live printer while the print stage runs: each status report and each fired cue. Called on
   /// the pipeline's thread; keep it quick.
   std::function<void(const PrinterLive&)> on_printer;
+  /// Test hook, not a job option (docs/colour.md, `printctl run --debug-misplace`): after nesting,
+  /// print this piece moved by (dx, dy) mm and turned by `rotation_deg` about the centre of its cut
+  /// outline, while the cut file and the measures keep its planned place, as a misfed or misplaced
+  /// print would be. The printed-seam figures must see it; the contone ones cannot.
+  struct Misplacement {
+    std::string piece;
+    double dx_mm = 0, dy_mm = 0, rotation_deg = 0;
+  };
+  std::optional<Misplacement> misplace_for_test;
 };
 
 /// Runs every stage of `job`. Always writes `<out_dir>/report.json` (stages, timings, figures,

@@ -10,8 +10,10 @@
 #include "geometry/design/render_piece_image.h"
 #include "host/common/atomic_file.h"
 #include "host/pipeline/garment_files.h"
+#include "host/pipeline/internal/gamut_report.h"
 #include "host/pipeline/internal/output_files.h"
 #include "host/pipeline/internal/pipeline_state.h"
+#include "host/pipeline/internal/printed_seams.h"
 #include "rip/image/image_io.h"
 
 namespace tp::host::internal {
@@ -120,8 +122,54 @@ Status stage_outputs(PipelineState& ps) {
     ps.report["seams"]["count"] = c->seam_list.size();
     ps.report["allowance"] = stats_json(c->allowance);
     ps.report["allowance"]["count"] = c->allowance_list.size();
+
+    // The same sample pairs on what was printed (docs/colour.md): only a print can show a piece
+    // placed, turned or fed off its planned place.
+    auto printed = measure_printed_seams(ps, kContinuityDpi);
+    if (!printed) return fail(printed.error());
+    if (printed->report) {
+      const geometry::ContinuityReport& pr = *printed->report;
+      ps.report["seams_printed"] = stats_json(pr.seams);
+      ps.report["seams_printed"]["count"] = pr.seam_list.size();
+      ps.report["allowance_printed"] = stats_json(pr.allowance);
+      ps.report["allowance_printed"]["count"] = pr.allowance_list.size();
+      for (const char* key : {"seams_printed", "allowance_printed"}) {
+        ps.report[key]["dpi"] = kContinuityDpi;
+        ps.report[key]["aperture_mm"] = printed_aperture_mm(ps.job.print.dpi);
+        ps.report[key]["fabric"] = printed->fabric_lab.filename().string();
+      }
+      nlohmann::json worst = nlohmann::json::array();
+      for (const geometry::SeamContinuity& s : pr.seam_list)
+        worst.push_back({{"piece_a", s.piece_a},
+                         {"edge_a", s.edge_a},
+                         {"piece_b", s.piece_b},
+                         {"edge_b", s.edge_b},
+                         {"samples", s.de00.samples},
+                         {"de00_mean", s.de00.mean},
+                         {"de00_p95", s.de00.p95}});
+      ps.report["seams_printed"]["list"] = worst;
+      // The largest few sample pairs, piece-local mm: where on the garment to look.
+      for (const auto& [key, samples] : {std::pair{"seams_printed", &pr.worst_seam_samples},
+                                         std::pair{"allowance_printed", &pr.worst_allowance_samples}}) {
+        nlohmann::json w = nlohmann::json::array();
+        for (const geometry::SamplePair& sp : *samples)
+          w.push_back({{"de00", sp.de00},
+                       {"piece_a", sp.piece_a},
+                       {"at_a_mm", {sp.at_a_mm.x, sp.at_a_mm.y}},
+                       {"piece_b", sp.piece_b},
+                       {"at_b_mm", {sp.at_b_mm.x, sp.at_b_mm.y}}});
+        ps.report[key]["worst_samples"] = w;
+      }
+    } else {
+      for (const char* key : {"seams_printed", "allowance_printed"}) {
+        ps.report[key] = stats_json({});
+        ps.report[key]["count"] = 0;
+        ps.report[key]["reason"] = printed->reason;
+      }
+    }
   }
-  return {};
+  // What of the design the printer cannot reproduce, and the soft proof that shows it.
+  return report_gamut(ps);
 }
 
 }  // namespace tp::host::internal

@@ -9,6 +9,7 @@
 #include "device/firmware/print_timing.h"
 #include "host/pipeline/internal/pipeline_state.h"
 #include "host/pipeline/internal/plan_steps.h"
+#include "host/pipeline/internal/printed_seams.h"
 #include "host/pipeline/printer_model.h"
 #include "host/session/print_session.h"
 #include "rip/job/rip_job.h"
@@ -213,7 +214,10 @@ Status stage_print(PipelineState& ps) {
                              "rip band " + std::to_string(p.band) + ": rows " + std::to_string(p.rows_done) + " of " +
                                  std::to_string(p.rows_total));
     };
-  auto stats = rip::rip_marker(ps.roll, *ps.renderer, *model, settings, sink, rip_progress, ps.cancel);
+  // The roll as printed: the plan, unless a test misplaces a piece (RunOptions::misplace_for_test).
+  auto printed = printed_roll(ps);
+  if (!printed) return fail(printed.error());
+  auto stats = rip::rip_marker(*printed, *ps.renderer, *model, settings, sink, rip_progress, ps.cancel);
   if (!stats) {
     if (session) (void)session->abort_job(stats.error().message);  // a no-op once the session ended it
     if (printer_error) return fail(*printer_error);

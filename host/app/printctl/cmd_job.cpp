@@ -1,10 +1,12 @@
 // host/app/printctl/cmd_job.cpp: printctl validate | run: a job from the command line.
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <ctime>
-#include <memory>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -93,6 +95,10 @@ void register_job_commands(CLI::App& app) {
       ->check(CLI::IsMember(printer_choice_names()));
   run->add_option("--resume-after-swath", resume_after, "Swaths up to this index were already printed");
   add_limit_option(run);
+  static std::string run_misplace;
+  run->add_option("--debug-misplace", run_misplace,
+                  "Debug and test hook: print piece P moved DX, DY mm and turned DEG degrees off its planned place "
+                  "(P:DX:DY:DEG), the cut file unchanged, to check the printed-seam figures (docs/colour.md)");
   run->add_option("--plan-dir", run_plan,
                   "The job's plan directory: garment, marker and swath plan are stored there when made and "
                   "loaded while their inputs are unchanged (docs/plan-storage.md)");
@@ -125,6 +131,34 @@ void register_job_commands(CLI::App& app) {
     opt.printer_override = printer_override;
     opt.resume_after_swath = resume_after;
     if (!run_plan.empty()) opt.plan_dir = fs::absolute(run_plan);
+    if (!run_misplace.empty()) {
+      // P:DX:DY:DEG, the piece name itself may hold ':' (the last three fields are numbers).
+      RunOptions::Misplacement m;
+      std::string rest = run_misplace;
+      double v[3] = {0, 0, 0};
+      bool ok = true;
+      for (int k = 2; k >= 0 && ok; --k) {
+        const std::size_t at = rest.rfind(':');
+        if (at == std::string::npos) {
+          ok = false;
+          break;
+        }
+        char* end = nullptr;
+        const std::string field = rest.substr(at + 1);
+        v[k] = std::strtod(field.c_str(), &end);
+        ok = !field.empty() && end && *end == 0 && std::isfinite(v[k]);
+        rest.resize(at);
+      }
+      if (!ok || rest.empty())
+        die(Error{ErrorCode::kInvalidArgument,
+                  "--debug-misplace '" + run_misplace + "': expected PIECE:DX_MM:DY_MM:DEG"},
+            1);
+      m.piece = rest;
+      m.dx_mm = v[0];
+      m.dy_mm = v[1];
+      m.rotation_deg = v[2];
+      opt.misplace_for_test = m;
+    }
     // Printers report "no job" as id 0, so a command-line run takes a non-zero id of its own.
     opt.job_id = static_cast<std::int64_t>(std::time(nullptr));
     // The same progress the daemon's events carry, drawn on standard error.

@@ -80,6 +80,47 @@ TEST(Continuity, AShiftedPieceShowsAsASeamDifference) {
   EXPECT_GT(worst, 3.0);
 }
 
+// The printed-seam measure reads the same sample pairs through a sampler of its own (host: the
+// printed fabric where the marker put each piece); here one that renders as the contone measure does.
+TEST(Continuity, ASamplerReadsTheSamePairsAndMaySkipSome) {
+  auto g = test::gore_skirt();
+  Finishing f;
+  f.marks = MarkMode::kNone;
+  auto r = make_piece_renderer(g.pattern, g.garment, ramp_design(), f);
+  ASSERT_TRUE(r) << r.error().what();
+  auto contone = measure_continuity(g.pattern, g.garment, f, **r, 100);
+  ASSERT_TRUE(contone) << contone.error().what();
+  const double mm_per_px = 25.4 / 100;
+  ContinuityOptions o;
+  int calls = 0;
+  o.sample = [&](int piece, Vec2 p) -> std::optional<Lab> {
+    ++calls;
+    Rgba8 px{};
+    (*r)->render(piece, Affine2{mm_per_px, 0, p.x - 0.5 * mm_per_px, 0, -mm_per_px, p.y + 0.5 * mm_per_px}, 1, 1, &px,
+                 1);
+    return srgb_over_white_to_lab(px);
+  };
+  auto same = measure_continuity(g.pattern, g.garment, f, **r, 100, o);
+  ASSERT_TRUE(same) << same.error().what();
+  EXPECT_GT(calls, 0);
+  EXPECT_EQ(same->seams.samples, contone->seams.samples);
+  EXPECT_NEAR(same->seams.mean, contone->seams.mean, 1e-9);
+  EXPECT_EQ(same->allowance.samples, contone->allowance.samples);
+  EXPECT_NEAR(same->allowance.p95, contone->allowance.p95, 1e-9);
+
+  // A piece the sampler cannot read (not on the fabric image) drops its pairs, and its seams.
+  o.sample = [&](int piece, Vec2 p) -> std::optional<Lab> {
+    if (piece == 2) return std::nullopt;
+    return Lab{50 + 0 * p.x, 0, 0};
+  };
+  auto partial = measure_continuity(g.pattern, g.garment, f, **r, 100, o);
+  ASSERT_TRUE(partial) << partial.error().what();
+  EXPECT_LT(partial->seams.samples, contone->seams.samples);
+  EXPECT_GT(partial->seams.samples, 0u);
+  EXPECT_EQ(partial->seams.max, 0.0);
+  for (const auto& s : partial->seam_list) EXPECT_TRUE(s.piece_a != "gore2" && s.piece_b != "gore2") << s.piece_a;
+}
+
 TEST(Continuity, RejectsABadDpi) {
   auto g = test::gore_skirt();
   auto r = make_piece_renderer(g.pattern, g.garment, ramp_design(), Finishing{});
