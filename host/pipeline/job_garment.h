@@ -38,8 +38,9 @@ struct JobGarment {
 /// Runs the design stage of `job` (its layers and finishing) on `garment`, sewn from the same
 /// garment section: the renderer the print stage would use, built to `options` (a preview at a
 /// low dpi needs a coarser tolerance than print). Fails naming the layer or field.
-[[nodiscard]] Result<std::unique_ptr<geometry::PieceRenderer>> make_job_renderer(
-    const Job& job, const JobGarment& garment, const geometry::RenderOptions& options,
-    const geometry::CancelToken& cancel);
+[[nodiscard]] Result<std::unique_ptr<geometry::PieceRenderer>> make_job_renderer(const Job& job,
+                                                                                 const JobGarment& garment,
+                                                                                 const geometry::RenderOptions& options,
+                                                                                 const geometry::CancelToken& cancel);
 
 }  // namespace tp::host

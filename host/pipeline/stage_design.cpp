@@ -151,7 +151,8 @@ Status stage_design(PipelineState& ps) {
   if (!design) return fail(design.error());
   ps.design = std::move(*design);
   ps.finishing = build_finishing(ps.job);
-  auto renderer = geometry::make_piece_renderer(ps.pattern, *ps.garment, ps.design, ps.finishing, ps.render_options, &ps.cancel);
+  auto renderer =
+      geometry::make_piece_renderer(ps.pattern, *ps.garment, ps.design, ps.finishing, ps.render_options, &ps.cancel);
   if (!renderer) {
     auto code = renderer.error().code == geometry::ErrorCode::kCancelled ? ErrorCode::kCancelled : ErrorCode::kPipeline;
     return fail(code, renderer.error().message);

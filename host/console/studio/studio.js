@@ -7,7 +7,7 @@ import { createScene, loadThree } from "./studio_scene.js";
 import { designJson, layerForm, newLayer, planarUp } from "./studio_layers.js";
 
 const SAMPLES = ["simple_top", "blouse", "dress", "skirt8"];
-const DEBOUNCE_MS = 120;
+const DEBOUNCE_MS = 80;
 
 function h(tag, attrs, ...children) {
   const e = document.createElement(tag);
@@ -31,6 +31,10 @@ const state = {
 export async function mount(container, context) {
   state.context = context || null;
   container.classList.add("st-root");
+  // Inside the console the page shell has only its own stylesheet: bring the studio's.
+  const css = new URL("./studio.css", import.meta.url).href;
+  if (![...document.styleSheets].some((sheet) => sheet.href === css))
+    document.head.append(Object.assign(document.createElement("link"), { rel: "stylesheet", href: css }));
   const base = container.dataset.threeBase || (context ? "/vendor/three/" : "/studio/three/");
   const lib = await loadThree(base);
   const status = h("p", { class: "st-status", role: "status", "aria-live": "polite" }, "Choose a garment and sew it.");
@@ -96,7 +100,7 @@ export async function mount(container, context) {
     centre,
     h("aside", { class: "st-side" }, h("fieldset", { class: "st-box" }, h("legend", {}, "Pieces"), pieces), settingsBox, problems)));
 
-  const view = createScene(lib, viewHost, { onPlace, onPaint });
+  const view = createScene(lib, viewHost, { onPlace, onPaint, onHandle });
   window.studio = { state, view, project: (p) => view.screenOf(p), pick: (x, y) => view.pick(x, y), design: () => designJson(state.layers) };
   container.addEventListener("keydown", (e) => {
     if (e.target.matches("input, select, textarea")) return;
@@ -195,6 +199,17 @@ export async function mount(container, context) {
     if (phase === "down") layer.normal = hit.normal;
     renderList();
     changed(phase === "move");
+  }
+
+  // Size and rotation handles of the selected planar image: the wheel (shift: rotation) in the
+  // Place tool, or the keys [ ] (size) and , . (rotation) on the canvas.
+  function onHandle(kind, steps) {
+    const layer = selectedLayer();
+    if (!layer || layer.type !== "planar") return;
+    if (kind === "size") layer.width = Math.max(5, Math.round(Number(layer.width) * Math.pow(1.05, steps)));
+    else layer.rotation_deg = ((Number(layer.rotation_deg) + 5 * steps + 540) % 360) - 180;
+    renderList();
+    changed();
   }
 
   let painting = null;

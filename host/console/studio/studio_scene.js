@@ -17,7 +17,8 @@ export async function loadThree(base) {
 
 /**
  * The view in `host`. `handlers`: onPlace(hit, phase) for the Place tool ("down", "move", "up"),
- * onPaint(hit, phase) for the Paint tool; a hit is {point:[x,y,z] mm, normal:[x,y,z], piece}.
+ * onPaint(hit, phase) for the Paint tool; a hit is {point:[x,y,z] mm, normal:[x,y,z], piece};
+ * onHandle("size" | "rotation", steps) from the wheel in the Place tool and the [ ] , . keys.
  */
 export function createScene(lib, host, handlers) {
   const { THREE, OBJLoader, OrbitControls } = lib;
@@ -140,6 +141,16 @@ export function createScene(lib, host, handlers) {
     (tool === "place" ? handlers.onPlace : handlers.onPaint)(pick(e.clientX, e.clientY), "up");
   };
   canvas.addEventListener("pointerup", end);
+  canvas.addEventListener("wheel", (e) => {
+    if (tool !== "place" || !handlers.onHandle) return;
+    e.preventDefault();
+    handlers.onHandle(e.shiftKey ? "rotation" : "size", e.deltaY < 0 ? 1 : -1);
+  }, { passive: false });
+  canvas.addEventListener("keydown", (e) => {
+    if (!handlers.onHandle) return;
+    const k = { "[": ["size", -1], "]": ["size", 1], ",": ["rotation", -1], ".": ["rotation", 1] }[e.key];
+    if (k) { e.preventDefault(); handlers.onHandle(k[0], k[1]); }
+  });
   canvas.addEventListener("pointercancel", end);
 
   /** Draws the guides of `layers` (the selected one brighter). `axisGuess` = {centre, size}. */

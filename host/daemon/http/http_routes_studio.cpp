@@ -46,14 +46,18 @@ void send_failure(httplib::Response& res, const Error& e) {
   if (e.code == ErrorCode::kValidation || e.code == ErrorCode::kUnsafePath)
     return send_json(res, 422, json{{"error", printable_utf8(e.message)}, {"problems", validation_list(e.message)}});
   if (e.code == ErrorCode::kPipeline || e.code == ErrorCode::kJob || e.code == ErrorCode::kInvalidArgument)
-    return send_json(res, 422, json{{"error", printable_utf8(e.message)},
-                                    {"problems", json::array({{{"file", ""}, {"pointer", ""}, {"message", printable_utf8(e.message)}}})}});
+    return send_json(
+        res, 422,
+        json{{"error", printable_utf8(e.message)},
+             {"problems", json::array({{{"file", ""}, {"pointer", ""}, {"message", printable_utf8(e.message)}}})}});
   send_error(res, 500, e.message);
 }
 
 void send_problem(httplib::Response& res, int status, const std::string& pointer, const std::string& message) {
-  send_json(res, status, json{{"error", printable_utf8(message)},
-                              {"problems", json::array({{{"file", "request"}, {"pointer", pointer}, {"message", printable_utf8(message)}}})}});
+  send_json(res, status,
+            json{{"error", printable_utf8(message)},
+                 {"problems",
+                  json::array({{{"file", "request"}, {"pointer", pointer}, {"message", printable_utf8(message)}}})}});
 }
 
 // A plain asset name: letters, digits, '-', '_', '.', not leading with '.', at most 100.
@@ -74,7 +78,8 @@ std::string extension_of(const std::string& name) {
 // Reads a non-multipart body of at most `cap` bytes; false (answered) when larger or cut short.
 bool read_body(const httplib::Request& req, const httplib::ContentReader& reader, std::size_t cap, std::string& out,
                httplib::Response& res) {
-  if (req.has_header("Content-Length") && std::strtoull(req.get_header_value("Content-Length").c_str(), nullptr, 10) > cap) {
+  if (req.has_header("Content-Length") &&
+      std::strtoull(req.get_header_value("Content-Length").c_str(), nullptr, 10) > cap) {
     send_problem(res, 413, "", "request body larger than " + std::to_string(cap) + " bytes");
     return false;
   }
@@ -87,8 +92,10 @@ bool read_body(const httplib::Request& req, const httplib::ContentReader& reader
     out.append(data, n);
     return true;
   });
-  if (too_big) send_problem(res, 413, "", "request body larger than " + std::to_string(cap) + " bytes");
-  else if (!ok) send_problem(res, 400, "", "request body interrupted");
+  if (too_big)
+    send_problem(res, 413, "", "request body larger than " + std::to_string(cap) + " bytes");
+  else if (!ok)
+    send_problem(res, 400, "", "request body interrupted");
   return ok && !too_big;
 }
 
@@ -113,7 +120,8 @@ bool read_json(const httplib::Request& req, const httplib::ContentReader& reader
 struct Part {
   std::string name, filename, data;
 };
-bool read_parts(const httplib::ContentReader& reader, std::size_t cap, std::vector<Part>& parts, httplib::Response& res) {
+bool read_parts(const httplib::ContentReader& reader, std::size_t cap, std::vector<Part>& parts,
+                httplib::Response& res) {
   std::size_t total = 0;
   bool too_big = false;
   const bool ok = reader(
@@ -130,8 +138,10 @@ bool read_parts(const httplib::ContentReader& reader, std::size_t cap, std::vect
         parts.back().data.append(data, n);
         return true;
       });
-  if (too_big) send_problem(res, 413, "", "upload larger than " + std::to_string(cap) + " bytes");
-  else if (!ok) send_problem(res, 400, "", "multipart upload interrupted");
+  if (too_big)
+    send_problem(res, 413, "", "upload larger than " + std::to_string(cap) + " bytes");
+  else if (!ok)
+    send_problem(res, 400, "", "multipart upload interrupted");
   return ok && !too_big;
 }
 
@@ -155,8 +165,10 @@ bool multipart_garment(const std::vector<Part>& parts, const fs::path& dir, json
         send_error(res, 500, (dir / rel).string() + ": cannot store the upload");
         return false;
       }
-      if (p.name == "pattern") section["pattern"] = rel;
-      else section["body"]["mesh"] = rel;
+      if (p.name == "pattern")
+        section["pattern"] = rel;
+      else
+        section["body"]["mesh"] = rel;
     } else if (p.name == "body_units") {
       section["body"]["units"] = p.data;
     } else if (p.name == "dress_form") {
@@ -164,8 +176,9 @@ bool multipart_garment(const std::vector<Part>& parts, const fs::path& dir, json
     } else if (p.name == "size" || p.name == "sample" || p.name == "stitches" || p.name == "pattern_format") {
       section[p.name] = p.data;
     } else {
-      send_problem(res, 400, "/" + p.name, "unknown part '" + p.name +
-                                               "' (pattern, body, body_units, dress_form, size, sample, stitches, pattern_format)");
+      send_problem(res, 400, "/" + p.name,
+                   "unknown part '" + p.name +
+                       "' (pattern, body, body_units, dress_form, size, sample, stitches, pattern_format)");
       return false;
     }
   }
@@ -184,9 +197,8 @@ bool multipart_garment(const std::vector<Part>& parts, const fs::path& dir, json
 
 void add_studio_routes(HttpServer::Impl& im) {
   HttpServer::Impl* p = &im;
-  auto cache = std::make_shared<StudioCache>(fs::absolute(p->backend.upload_dir) /
-                                                 ("studio-" + std::to_string(::getpid())),
-                                             kStudioGarments);
+  auto cache = std::make_shared<StudioCache>(
+      fs::absolute(p->backend.upload_dir) / ("studio-" + std::to_string(::getpid())), kStudioGarments);
   im.studio = cache;
   const std::string id_re = "/api/v1/studio/garments/([0-9a-f]{16})";
 
@@ -223,8 +235,9 @@ void add_studio_routes(HttpServer::Impl& im) {
       if (!read_json(req, reader, body, res)) return;
       for (const auto& [key, value] : body.items()) {
         if (key != "sample" && key != "size" && key != "body" && key != "material")
-          return send_problem(res, 400, "/" + key, "unknown field '" + key +
-                                                       "' (sample, size, body with dress_form; upload files as multipart)");
+          return send_problem(
+              res, 400, "/" + key,
+              "unknown field '" + key + "' (sample, size, body with dress_form; upload files as multipart)");
         section[key] = value;
       }
       if (section.contains("body") && section["body"].is_object() && section["body"].contains("mesh"))
@@ -271,7 +284,7 @@ void add_studio_routes(HttpServer::Impl& im) {
   });
 
   im.server->Post(id_re + "/assets", [p, cache](const httplib::Request& req, httplib::Response& res,
-                                               const httplib::ContentReader& reader) {
+                                                const httplib::ContentReader& reader) {
     auto g = cache->get(req.matches[1]);
     if (!g) return send_error(res, 404, "no studio garment " + std::string(req.matches[1]));
     std::vector<Part> parts;
@@ -286,8 +299,8 @@ void add_studio_routes(HttpServer::Impl& im) {
     json paths = json::array();
     for (const Part& part : parts) {
       if (!plain_name(part.filename))
-        return send_problem(res, 400, "/" + part.name, "asset name '" + part.filename +
-                                                           "': use letters, digits, '-', '_' and '.' (not leading)");
+        return send_problem(res, 400, "/" + part.name,
+                            "asset name '" + part.filename + "': use letters, digits, '-', '_' and '.' (not leading)");
       const std::string rel = "assets/" + part.filename;
       std::lock_guard lock(g->mu);
       if (!write_bytes(g->dir / rel, part.data)) return send_error(res, 500, rel + ": cannot store the upload");
@@ -296,31 +309,32 @@ void add_studio_routes(HttpServer::Impl& im) {
     send_json(res, 201, json{{"paths", paths}});
   });
 
-  im.server->Post(id_re + "/preview", [cache](const httplib::Request& req, httplib::Response& res,
-                                             const httplib::ContentReader& reader) {
-    auto g = cache->get(req.matches[1]);
-    if (!g) return send_error(res, 404, "no studio garment " + std::string(req.matches[1]));
-    json body;
-    if (!read_json(req, reader, body, res)) return;
-    // The body is job.json's design object, or {"design": {...}}.
-    const json design = body.contains("design") ? body["design"] : body;
-    auto preview = render_studio_preview(*g, design, PackageLimits{}, geometry::CancelToken{});
-    if (!preview) return send_failure(res, preview.error());
-    res.set_header("X-Build-Ms", std::to_string(preview->build_ms));
-    res.set_header("X-Render-Ms", std::to_string(preview->render_ms));
-    res.set_header("Cache-Control", "no-store");
-    res.set_content(std::move(preview->png), "image/png");
-  });
+  im.server->Post(id_re + "/preview",
+                  [cache](const httplib::Request& req, httplib::Response& res, const httplib::ContentReader& reader) {
+                    auto g = cache->get(req.matches[1]);
+                    if (!g) return send_error(res, 404, "no studio garment " + std::string(req.matches[1]));
+                    json body;
+                    if (!read_json(req, reader, body, res)) return;
+                    // The body is job.json's design object, or {"design": {...}}.
+                    const json design = body.contains("design") ? body["design"] : body;
+                    auto preview = render_studio_preview(*g, design, PackageLimits{}, geometry::CancelToken{});
+                    if (!preview) return send_failure(res, preview.error());
+                    res.set_header("X-Build-Ms", std::to_string(preview->build_ms));
+                    res.set_header("X-Render-Ms", std::to_string(preview->render_ms));
+                    res.set_header("Cache-Control", "no-store");
+                    res.set_content(std::move(preview->png), "image/png");
+                  });
 
   im.server->Post(id_re + "/job", [p, cache](const httplib::Request& req, httplib::Response& res,
-                                            const httplib::ContentReader& reader) {
+                                             const httplib::ContentReader& reader) {
     auto g = cache->get(req.matches[1]);
     if (!g) return send_error(res, 404, "no studio garment " + std::string(req.matches[1]));
     json body;
     if (!read_json(req, reader, body, res)) return;
     for (const auto& [key, value] : body.items())
       if (key != "name" && key != "design" && key != "finishing" && key != "marker" && key != "print")
-        return send_problem(res, 400, "/" + key, "unknown field '" + key + "' (name, design, finishing, marker, print)");
+        return send_problem(res, 400, "/" + key,
+                            "unknown field '" + key + "' (name, design, finishing, marker, print)");
     const fs::path zip = g->dir / ("job-" + std::to_string(p->upload_serial.fetch_add(1)) + ".zip");
     struct Cleanup {
       fs::path path;
@@ -335,7 +349,8 @@ void add_studio_routes(HttpServer::Impl& im) {
     s << in.rdbuf();
     if (!in) return send_error(res, 500, zip.string() + ": cannot read the package");
     const std::string name = body.value("name", std::string("studio-design"));
-    res.set_header("Content-Disposition", "attachment; filename=\"" + (plain_name(name) ? name : "studio-design") + ".zip\"");
+    res.set_header("Content-Disposition",
+                   "attachment; filename=\"" + (plain_name(name) ? name : "studio-design") + ".zip\"");
     res.set_content(s.str(), "application/zip");
   });
 

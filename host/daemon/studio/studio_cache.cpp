@@ -7,7 +7,8 @@ namespace tp::host {
 
 namespace fs = std::filesystem;
 
-StudioCache::StudioCache(fs::path root, std::size_t capacity) : root_(std::move(root)), capacity_(std::max<std::size_t>(1, capacity)) {
+StudioCache::StudioCache(fs::path root, std::size_t capacity)
+    : root_(std::move(root)), capacity_(std::max<std::size_t>(1, capacity)) {
   std::error_code ec;
   fs::remove_all(root_, ec);
 }

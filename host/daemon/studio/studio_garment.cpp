@@ -89,8 +89,8 @@ Result<std::unique_ptr<StudioGarment>> sew_studio_garment(std::string id, const 
   // The blank atlas fixes the layout every preview repeats (same pieces, outlines and dpi).
   auto blank = make_job_renderer(*job, g->sewn, studio_render_options(kStudioPreviewDpi), cancel);
   if (!blank) return fail(blank.error());
-  auto files = write_textured_garment(dir / "garment", "atlas", g->sewn.pattern, g->sewn.garment, **blank,
-                                      kStudioPreviewDpi);
+  auto files =
+      write_textured_garment(dir / "garment", "atlas", g->sewn.pattern, g->sewn.garment, **blank, kStudioPreviewDpi);
   if (!files) return fail(files.error());
   std::ifstream in(dir / "garment" / files->obj, std::ios::binary);
   std::ostringstream text;

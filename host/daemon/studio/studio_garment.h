@@ -30,14 +30,14 @@ inline constexpr const char* kStudioMeshEdge = "25 mm";
 /// (pattern, body, images, textured OBJs) that the design's asset paths name.
 struct StudioGarment {
   std::string id;
-  std::filesystem::path dir;        ///< session folder (removed with the garment)
-  nlohmann::json garment_section;   ///< job.json's "garment" object, asset paths relative to dir
+  std::filesystem::path dir;       ///< session folder (removed with the garment)
+  nlohmann::json garment_section;  ///< job.json's "garment" object, asset paths relative to dir
   JobGarment sewn;
-  std::string obj;                  ///< the garment mesh, UVs into the preview atlas (0..1), mm
+  std::string obj;  ///< the garment mesh, UVs into the preview atlas (0..1), mm
   int atlas_width_px = 0, atlas_height_px = 0;
   double atlas_dpi = 0;
   double sew_seconds = 0;
-  std::mutex mu;                    ///< one preview or package at a time per garment
+  std::mutex mu;  ///< one preview or package at a time per garment
 
   ~StudioGarment();
   /// The garment's description for the API: id, pieces, mode, timings, URLs.
@@ -55,7 +55,8 @@ struct StudioGarment {
 
 /// Sews `garment_section` (asset paths relative to `dir`, which exists) at the studio's mesh edge,
 /// undraped, and renders the blank atlas to map the mesh's UVs. Fails naming the field or stage.
-[[nodiscard]] Result<std::unique_ptr<StudioGarment>> sew_studio_garment(std::string id, const std::filesystem::path& dir,
+[[nodiscard]] Result<std::unique_ptr<StudioGarment>> sew_studio_garment(std::string id,
+                                                                        const std::filesystem::path& dir,
                                                                         nlohmann::json garment_section,
                                                                         const PackageLimits& limits,
                                                                         const geometry::CancelToken& cancel);

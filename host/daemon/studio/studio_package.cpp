@@ -3,6 +3,7 @@
 
 #include <zip.h>
 
+#include <algorithm>
 #include <fstream>
 #include <memory>
 #include <sstream>
@@ -71,7 +72,9 @@ Status write_studio_package(StudioGarment& g, const json& settings, const fs::pa
   int err = 0;
   fs::remove(zip_path, ec);
   std::unique_ptr<zip_t, ZipCloser> z(zip_open(zip_path.c_str(), ZIP_CREATE | ZIP_TRUNCATE, &err));
-  if (!z) return fail(ErrorCode::kIo, zip_path.string() + ": cannot create the archive (libzip error " + std::to_string(err) + ")");
+  if (!z)
+    return fail(ErrorCode::kIo,
+                zip_path.string() + ": cannot create the archive (libzip error " + std::to_string(err) + ")");
   for (const auto& [name, bytes] : entries)
     if (auto st = add_entry(z.get(), name, bytes, zip_path); !st) return st;
   if (zip_close(z.get()) != 0) return fail(ErrorCode::kIo, zip_path.string() + ": " + zip_strerror(z.get()));
@@ -82,8 +85,10 @@ Status write_studio_package(StudioGarment& g, const json& settings, const fs::pa
   fs::remove_all(check, ec);
   auto package = JobPackage::open(zip_path, check, limits);
   Status result = {};
-  if (!package) result = fail(package.error().with_context("saved package"));
-  else if (auto job = load_job(*package); !job) result = fail(job.error().with_context("saved package"));
+  if (!package)
+    result = fail(package.error().with_context("saved package"));
+  else if (auto job = load_job(*package); !job)
+    result = fail(job.error().with_context("saved package"));
   fs::remove_all(check, ec);
   return result;
 }

@@ -17,8 +17,8 @@ double ms_since(std::chrono::steady_clock::time_point t0) {
 
 }  // namespace
 
-Result<StudioPreview> render_studio_preview(StudioGarment& g, const nlohmann::json& design,
-                                            const PackageLimits& limits, const geometry::CancelToken& cancel) {
+Result<StudioPreview> render_studio_preview(StudioGarment& g, const nlohmann::json& design, const PackageLimits& limits,
+                                            const geometry::CancelToken& cancel) {
   std::lock_guard lock(g.mu);
   StudioPreview out;
   const auto t0 = std::chrono::steady_clock::now();

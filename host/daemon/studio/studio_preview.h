@@ -12,9 +12,9 @@ namespace tp::host {
 
 /// A rendered preview atlas.
 struct StudioPreview {
-  std::string png;           ///< the atlas (RGBA, over transparent), same size as the garment's
-  double build_ms = 0;       ///< design stage: layers read, renderer built
-  double render_ms = 0;      ///< every piece rendered and packed
+  std::string png;       ///< the atlas (RGBA, over transparent), same size as the garment's
+  double build_ms = 0;   ///< design stage: layers read, renderer built
+  double render_ms = 0;  ///< every piece rendered and packed
 };
 
 /// Renders `design` (job.json's "design" object: {"layers": [...]}) on `g` at the atlas dpi.

@@ -44,9 +44,17 @@ class StudioDaemon {
       const std::string log = (root_ / "printd.log").string();
       if (std::freopen(log.c_str(), "a", stdout)) ::dup2(::fileno(stdout), 2);
       ::setenv("TP_STUDIO_DIR", (source_dir() / "host/console/studio").c_str(), 1);
-      std::vector<std::string> args = {(bin_dir() / "printd").string(), "--state-dir", (root_ / "state").string(),
-                                        "--out", (root_ / "out").string(), "--printer", "none",
-                                        "--config", (root_ / "none.conf").string(), "--listen", "127.0.0.1:0"};
+      std::vector<std::string> args = {(bin_dir() / "printd").string(),
+                                       "--state-dir",
+                                       (root_ / "state").string(),
+                                       "--out",
+                                       (root_ / "out").string(),
+                                       "--printer",
+                                       "none",
+                                       "--config",
+                                       (root_ / "none.conf").string(),
+                                       "--listen",
+                                       "127.0.0.1:0"};
       std::vector<char*> argv;
       for (auto& a : args) argv.push_back(a.data());
       argv.push_back(nullptr);
@@ -57,8 +65,10 @@ class StudioDaemon {
     for (int i = 0; i < 300 && port_ == 0; ++i) {
       std::smatch m;
       const std::string log = slurp(root_ / "printd.log");
-      if (std::regex_search(log, m, port_re)) port_ = std::stoi(m[1]);
-      else std::this_thread::sleep_for(50ms);
+      if (std::regex_search(log, m, port_re))
+        port_ = std::stoi(m[1]);
+      else
+        std::this_thread::sleep_for(50ms);
     }
   }
   ~StudioDaemon() {
@@ -182,15 +192,18 @@ TEST_F(StudioRoutes, SavesAJobPackageThatValidates) {
   ASSERT_TRUE(up);
   ASSERT_EQ(up->status, 201) << up->body;
   EXPECT_EQ(json::parse(up->body)["paths"][0], "assets/motif.png");
-  const json settings = {
-      {"name", "studio-routes"},
-      {"design",
-       {{"layers",
-         {{{"type", "planar"}, {"image", "assets/motif.png"}, {"centre", {0, 1200, 130}}, {"normal", {0, 0, 1}},
-           {"up", {0, 1, 0}}, {"width", 120}}}}}},
-      {"finishing", {{"seam_allowance", 8}}},
-      {"marker", {{"fabric_width", 1500}}},
-      {"print", {{"dpi", 150}}}};
+  const json settings = {{"name", "studio-routes"},
+                         {"design",
+                          {{"layers",
+                            {{{"type", "planar"},
+                              {"image", "assets/motif.png"},
+                              {"centre", {0, 1200, 130}},
+                              {"normal", {0, 0, 1}},
+                              {"up", {0, 1, 0}},
+                              {"width", 120}}}}}},
+                         {"finishing", {{"seam_allowance", 8}}},
+                         {"marker", {{"fabric_width", 1500}}},
+                         {"print", {{"dpi", 150}}}};
   auto r = c.Post(url("job"), settings.dump(), "application/json");
   ASSERT_TRUE(r);
   ASSERT_EQ(r->status, 200) << r->body;
@@ -200,6 +213,40 @@ TEST_F(StudioRoutes, SavesAJobPackageThatValidates) {
   const auto v = run_command({(bin_dir() / "printctl").string(), "validate", zip.string()});
   EXPECT_EQ(v.exit_code, 0) << v.output;
   EXPECT_NE(v.output.find("valid job 'studio-routes'"), std::string::npos) << v.output;
+}
+
+TEST_F(StudioRoutes, TakesAnUploadedPatternAndPackagesIt) {
+  auto c = daemon_->client();
+  // Without a body the pattern is laid flat: the studio designs in the pieces' own plane.
+  httplib::MultipartFormDataItems items = {
+      {"pattern", slurp(source_dir() / "examples/patterns/tee.json"), "tee.json", "application/json"}};
+  auto r = c.Post("/api/v1/studio/garments", items);
+  ASSERT_TRUE(r);
+  ASSERT_EQ(r->status, 201) << r->body;
+  const json g = json::parse(r->body);
+  EXPECT_EQ(g["mode"], "flat");
+  EXPECT_EQ(g["pieces"].size(), 4u);
+  EXPECT_EQ(g["garment"]["pattern"], "assets/pattern.json");
+  auto job = c.Post(g["urls"]["job"].get<std::string>(), R"({"name": "studio-tee", "print": {"dpi": 150}})",
+                    "application/json");
+  ASSERT_TRUE(job);
+  ASSERT_EQ(job->status, 200) << job->body;
+  const fs::path zip = daemon_->root() / "studio-tee.zip";
+  std::ofstream(zip, std::ios::binary) << job->body;
+  const auto v = run_command({(bin_dir() / "printctl").string(), "validate", zip.string()});
+  EXPECT_EQ(v.exit_code, 0) << v.output;
+
+  httplib::MultipartFormDataItems odd = {{"patern", "{}", "x.json", "application/json"}};
+  auto bad = c.Post("/api/v1/studio/garments", odd);
+  ASSERT_TRUE(bad);
+  EXPECT_EQ(bad->status, 400);
+  EXPECT_NE(bad->body.find("unknown part 'patern'"), std::string::npos) << bad->body;
+  auto gone = c.Delete("/api/v1/studio/garments/" + g["id"].get<std::string>());
+  ASSERT_TRUE(gone);
+  EXPECT_EQ(gone->status, 204);
+  auto after = c.Get(g["urls"]["mesh"].get<std::string>());
+  ASSERT_TRUE(after);
+  EXPECT_EQ(after->status, 404);
 }
 
 TEST_F(StudioRoutes, RefusesBrokenInputWithItsPointer) {
@@ -215,7 +262,8 @@ TEST_F(StudioRoutes, RefusesBrokenInputWithItsPointer) {
   EXPECT_EQ(refused->status, 422);
   const json problems = json::parse(refused->body)["problems"];
   bool centre = false;
-  for (const auto& p : problems) centre = centre || (p["file"] == "job.json" && p["pointer"] == "/design/layers/0/centre");
+  for (const auto& p : problems)
+    centre = centre || (p["file"] == "job.json" && p["pointer"] == "/design/layers/0/centre");
   EXPECT_TRUE(centre) << refused->body;
 
   auto unknown = c.Post("/api/v1/studio/garments/0123456789abcdef/preview", R"({"layers": []})", "application/json");
