@@ -70,7 +70,8 @@ export async function mount(container, context) {
   const centre = h("div", { class: "st-centre" }, h("div", { class: "st-row st-tools", role: "toolbar", "aria-label": "Tools" }, ...tools), viewHost, status);
 
   // The flat pieces (the same atlas as on the garment) and the job settings.
-  const pieces = h("img", { class: "st-pieces", id: "st-pieces", alt: "The printed pieces, flat, as the daemon renders them" });
+  const pieces = h("canvas", { class: "st-pieces", id: "st-pieces", role: "img",
+                               "aria-label": "The printed pieces, flat, as the daemon renders them, seam lines drawn" });
   const settings = {
     seam_allowance: h("input", { type: "number", min: 0, max: 100, step: 1, value: 10, id: "st-seam" }),
     hem_allowance: h("input", { type: "number", min: 0, max: 200, step: 1, value: 20, id: "st-hem" }),
@@ -120,7 +121,9 @@ export async function mount(container, context) {
       const g = upload ? await api.sewUpload(patternFile.files[0], bodyFile.files[0], bodyUnits.value, size.value)
                        : await api.sewSample(sample.value, size.value);
       state.garment = g;
-      state.box = view.load(await api.garmentMesh(g));
+      const objText = await api.garmentMesh(g);
+      state.box = view.load(objText);
+      state.seams = seamLines(objText);
       say(`${g.garment.sample || "pattern"}: ${g.pieces.length} pieces, ${g.vertices} vertices, sewn in ${g.sew_s.toFixed(1)} s.`);
       viewHost.dataset.garment = g.id;
       changed();
@@ -269,9 +272,7 @@ export async function mount(container, context) {
       if (seq !== state.seq) return;
       await view.setAtlas(blob);
       if (seq !== state.seq) return;
-      const old = pieces.src;
-      pieces.src = URL.createObjectURL(blob);
-      if (old) URL.revokeObjectURL(old);
+      await drawPieces(pieces, blob, state.seams);
       const ms = performance.now() - since;
       state.pendingSince = null;
       state.applied = seq;
@@ -326,6 +327,51 @@ export async function mount(container, context) {
 
   renderList();
   setTool("orbit");
+}
+
+// The seam line of every piece in atlas coordinates (0..1, v up): the UV edges that only one
+// triangle of its group uses.
+function seamLines(objText) {
+  const vt = [], lines = [];
+  let count = new Map();
+  const flush = () => {
+    for (const [key, n] of count) if (n === 1) lines.push(key.split(",").map(Number));
+    count = new Map();
+  };
+  for (const line of objText.split("\n")) {
+    if (line.startsWith("vt ")) vt.push(line.split(/\s+/).slice(1, 3).map(Number));
+    else if (line.startsWith("g ")) flush();
+    else if (line.startsWith("f ")) {
+      const idx = line.trim().split(/\s+/).slice(1).map((c) => Number(c.split("/")[1]) - 1);
+      for (let i = 0; i < idx.length; ++i) {
+        const a = Math.min(idx[i], idx[(i + 1) % idx.length]), b = Math.max(idx[i], idx[(i + 1) % idx.length]);
+        const key = `${a},${b}`;
+        count.set(key, (count.get(key) || 0) + 1);
+      }
+    }
+  }
+  flush();
+  return lines.map(([a, b]) => [vt[a], vt[b]]).filter(([p, q]) => p && q);
+}
+
+// The atlas on the flat-pieces canvas (fitted to the panel) with the seam lines over it.
+async function drawPieces(canvas, blob, seams) {
+  const bitmap = await createImageBitmap(blob);
+  const width = Math.max(200, canvas.parentElement.clientWidth - 16);
+  const scale = Math.min(width / bitmap.width, 320 / bitmap.height);
+  canvas.width = Math.round(bitmap.width * scale);
+  canvas.height = Math.round(bitmap.height * scale);
+  const ctx = canvas.getContext("2d");
+  ctx.drawImage(bitmap, 0, 0, canvas.width, canvas.height);
+  bitmap.close();
+  ctx.strokeStyle = "rgba(60, 80, 110, 0.8)";
+  ctx.lineWidth = 1;
+  ctx.beginPath();
+  for (const [p, q] of seams || []) {
+    ctx.moveTo(p[0] * canvas.width, (1 - p[1]) * canvas.height);
+    ctx.lineTo(q[0] * canvas.width, (1 - q[1]) * canvas.height);
+  }
+  ctx.stroke();
 }
 
 /** Called by the console each later time the Studio tab opens. */
