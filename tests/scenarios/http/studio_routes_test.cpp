@@ -180,6 +180,40 @@ TEST_F(StudioRoutes, PreviewShowsAStrokeWhereItWasPainted) {
   EXPECT_FALSE(stroke->get_header_value("X-Render-Ms").empty());
 }
 
+// The garment's own mesh, textured with a preview atlas, is a textured model of the same garment:
+// transferred back, it prints what the atlas shows (an independent path through the renderer).
+TEST_F(StudioRoutes, TextureTransferOfTheGarmentsOwnModelGivesItsPrintBack) {
+  auto c = daemon_->client();
+  auto obj = c.Get(url("mesh"));
+  auto src = c.Post(url("preview"),
+                    R"({"layers": [{"type": "cylindrical", "procedural": {"kind": "stripes", "size_px": 256}, "tile_width": 200}]})",
+                    "application/json");
+  ASSERT_TRUE(obj && src);
+  ASSERT_EQ(src->status, 200) << src->body;
+  for (const auto& [name, body] : {std::pair{"own.obj", obj->body}, std::pair{"own.png", src->body}}) {
+    auto up = c.Post(url("assets") + "?name=" + name, body, "application/octet-stream");
+    ASSERT_TRUE(up);
+    ASSERT_EQ(up->status, 201) << up->body;
+  }
+  auto back = c.Post(url("preview"),
+                     R"({"layers": [{"type": "texture", "mesh": "assets/own.obj", "image": "assets/own.png"}]})",
+                     "application/json");
+  ASSERT_TRUE(back);
+  ASSERT_EQ(back->status, 200) << back->body;
+  const auto a = png_of(src->body), b = png_of(back->body);
+  ASSERT_EQ(a.pixels.size(), b.pixels.size());
+  double diff = 0;
+  std::size_t far = 0;
+  for (std::size_t i = 0; i < a.pixels.size(); ++i) {
+    const int d = std::abs(a.pixels[i].r - b.pixels[i].r) + std::abs(a.pixels[i].g - b.pixels[i].g) +
+                  std::abs(a.pixels[i].b - b.pixels[i].b);
+    diff += d / 3.0;
+    far += d > 3 * 64;
+  }
+  EXPECT_LT(diff / static_cast<double>(a.pixels.size()), 6.0);
+  EXPECT_LT(static_cast<double>(far) / static_cast<double>(a.pixels.size()), 0.01);
+}
+
 TEST_F(StudioRoutes, SavesAJobPackageThatValidates) {
   auto c = daemon_->client();
   // An uploaded image used by a planar layer travels with the package.
