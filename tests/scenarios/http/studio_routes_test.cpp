@@ -185,9 +185,10 @@ TEST_F(StudioRoutes, PreviewShowsAStrokeWhereItWasPainted) {
 TEST_F(StudioRoutes, TextureTransferOfTheGarmentsOwnModelGivesItsPrintBack) {
   auto c = daemon_->client();
   auto obj = c.Get(url("mesh"));
-  auto src = c.Post(url("preview"),
-                    R"({"layers": [{"type": "cylindrical", "procedural": {"kind": "stripes", "size_px": 256}, "tile_width": 200}]})",
-                    "application/json");
+  auto src = c.Post(
+      url("preview"),
+      R"({"layers": [{"type": "cylindrical", "procedural": {"kind": "stripes", "size_px": 256}, "tile_width": 200}]})",
+      "application/json");
   ASSERT_TRUE(obj && src);
   ASSERT_EQ(src->status, 200) << src->body;
   for (const auto& [name, body] : {std::pair{"own.obj", obj->body}, std::pair{"own.png", src->body}}) {
