@@ -147,8 +147,27 @@ def main():
             print(f"stroke_path_red_before={red_before} stroke_path_red_after={red_after} of {len(path)}")
             check(red_after >= 0.8 * len(path) and red_before < 0.2 * len(path), "the stroke shows red along its path")
 
+            # Hidden, the stroke leaves the preview; shown again, it is back.
+            driver.find_element("css selector", "#st-layers li[data-layer]:last-child button[aria-label^=Hide]").click()
+            n = wait_preview(driver, n)
+            hidden = screenshot(driver, shots, "studio-3-hidden.png")
+            red_hidden = sum(reddish(hidden[2][int(y) + 5][int(x)]) for x, y in path)
+            driver.find_element("css selector", "#st-layers li[data-layer]:last-child button[aria-label^=Show]").click()
+            n = wait_preview(driver, n)
+            print(f"stroke_path_red_hidden={red_hidden}")
+            check(red_hidden < 0.2 * len(path), "a hidden stroke is not in the preview")
+
+            # The planar image dragged to the wearer's right with the Place tool moves along the surface.
+            driver.find_element("css selector", "#st-layers li[data-layer]:first-child .st-name").click()
+            driver.find_element("css selector", "button[data-tool=place]").click()
+            pointer_path(driver, [(px, py)] + [(px - 8 * i, py) for i in range(1, 6)])
+            n = wait_preview(driver, n)
+            moved = driver.execute_script("return window.studio.design().layers.find(l => l.type === 'planar').centre")
+            print(f"planar_moved_from={[round(v) for v in hit['point']]} to={[round(v) for v in moved]}")
+            check(moved[0] < hit["point"][0] - 10, "dragging moved the planar image across the garment")
+
             # Ten changes (the planar width), each timed by the page from the edit to the texture applied.
-            driver.find_element("css selector", "#st-layers li[data-layer] .st-name").click()  # the first (planar) layer
+            driver.find_element("css selector", "#st-layers li[data-layer]:first-child .st-name").click()  # the planar layer
             driver.execute_script("window.studio.state.timings.length = 0")
             for i in range(10):
                 driver.execute_script(f"""const el = document.querySelector('#st-form input[data-key=width]');
