@@ -9,7 +9,10 @@ namespace fs = std::filesystem;
 
 StudioCache::StudioCache(fs::path root, std::size_t capacity)
     : root_(std::move(root)), capacity_(std::max<std::size_t>(1, capacity)) {
+  // Sessions of an earlier printd on this state directory (stopped, or killed) are gone with it.
   std::error_code ec;
+  for (const auto& e : fs::directory_iterator(root_.parent_path(), ec))
+    if (e.is_directory() && e.path().filename().string().rfind("studio-", 0) == 0) fs::remove_all(e.path(), ec);
   fs::remove_all(root_, ec);
 }
 

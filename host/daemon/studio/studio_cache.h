@@ -17,7 +17,8 @@ namespace tp::host {
 
 class StudioCache {
  public:
-  /// Session folders go under `root` (created, emptied of earlier runs' sessions).
+  /// Session folders go under `root` (created on first use); `root`'s siblings named studio-*,
+  /// earlier runs' sessions, are removed.
   StudioCache(std::filesystem::path root, std::size_t capacity);
 
   /// A fresh unguessable id (16 hex digits) and its session folder, created with assets/.
