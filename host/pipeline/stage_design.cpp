@@ -1,5 +1,8 @@
 // host/pipeline/stage_design.cpp: the design stage: the job's layers (images read through the
 // RIP's colour-managed reader, or generated), its finishing, and the piece renderer over both.
+#include <list>
+#include <mutex>
+
 #include "geometry/design/make_piece_renderer.h"
 #include "geometry/design/texture_model.h"
 #include "geometry/design/textures.h"
@@ -10,15 +13,27 @@ namespace tp::host::internal {
 
 namespace {
 
+/// Procedural tiles kept for layers asking for the same one again (16 MiB each at 2048 px).
+constexpr std::size_t kProceduralKept = 4;
+
 geometry::Vec3 vec3(const std::array<double, 3>& a) { return {a[0], a[1], a[2]}; }
 
-// A layer's image: a file from the package or a procedural texture.
-Result<geometry::ImageHandle> layer_image(const DesignLayerSpec& s, size_t index) {
-  const std::string where = "job.json: /design/layers/" + std::to_string(index);
-  if (s.image) {
-    auto img = rip::read_image(*s.image);
-    if (!img) return fail(ErrorCode::kValidation, where + "/image: " + img.error().message);
-    return std::make_shared<const geometry::ImageRgba8>(std::move(*img));
+// A procedural texture, generated once per process for the same parameters: the studio renders
+// a design again after every change, and a 2048 px tile takes longer than the rest of a preview.
+// Generation is deterministic, so a kept tile is the one that would be made again.
+Result<geometry::ImageHandle> procedural_image(const DesignLayerSpec& s, const std::string& where) {
+  const std::string key = s.procedural + "/" + std::to_string(s.procedural_seed) + "/" +
+                          std::to_string(s.procedural_size_px) + "/" + std::to_string(s.procedural_count) + "/" +
+                          std::to_string(s.procedural_vertical);
+  static std::mutex mu;
+  static std::list<std::pair<std::string, geometry::ImageHandle>> kept;  // most recent first
+  {
+    std::lock_guard lock(mu);
+    for (auto it = kept.begin(); it != kept.end(); ++it)
+      if (it->first == key) {
+        kept.splice(kept.begin(), kept, it);
+        return kept.front().second;
+      }
   }
   geometry::ImageRgba8 img;
   if (s.procedural == "marbling") {
@@ -35,7 +50,22 @@ Result<geometry::ImageHandle> layer_image(const DesignLayerSpec& s, size_t index
     return fail(ErrorCode::kValidation, where + ": no image source");
   }
   img.source = "procedural:" + s.procedural;
-  return std::make_shared<const geometry::ImageRgba8>(std::move(img));
+  geometry::ImageHandle handle = std::make_shared<const geometry::ImageRgba8>(std::move(img));
+  std::lock_guard lock(mu);
+  kept.emplace_front(key, handle);
+  if (kept.size() > kProceduralKept) kept.pop_back();
+  return handle;
+}
+
+// A layer's image: a file from the package or a procedural texture.
+Result<geometry::ImageHandle> layer_image(const DesignLayerSpec& s, size_t index) {
+  const std::string where = "job.json: /design/layers/" + std::to_string(index);
+  if (s.image) {
+    auto img = rip::read_image(*s.image);
+    if (!img) return fail(ErrorCode::kValidation, where + "/image: " + img.error().message);
+    return std::make_shared<const geometry::ImageRgba8>(std::move(*img));
+  }
+  return procedural_image(s, where);
 }
 
 Result<geometry::Design> build_design(const Job& job) {
@@ -121,7 +151,8 @@ Status stage_design(PipelineState& ps) {
   if (!design) return fail(design.error());
   ps.design = std::move(*design);
   ps.finishing = build_finishing(ps.job);
-  auto renderer = geometry::make_piece_renderer(ps.pattern, *ps.garment, ps.design, ps.finishing, {}, &ps.cancel);
+  auto renderer =
+      geometry::make_piece_renderer(ps.pattern, *ps.garment, ps.design, ps.finishing, ps.render_options, &ps.cancel);
   if (!renderer) {
     auto code = renderer.error().code == geometry::ErrorCode::kCancelled ? ErrorCode::kCancelled : ErrorCode::kPipeline;
     return fail(code, renderer.error().message);

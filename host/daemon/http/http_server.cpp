@@ -199,6 +199,7 @@ Result<std::unique_ptr<HttpServer>> HttpServer::start(const HttpConfig& config, 
   http::add_job_routes(*im);
   http::add_upload_route(*im);
   http::add_event_routes(*im);
+  http::add_studio_routes(*im);
   http::add_static_routes(*im);
 
   if (addr->port == 0) {

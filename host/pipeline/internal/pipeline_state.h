@@ -10,6 +10,7 @@
 #include "geometry/body/body_sdf.h"
 #include "geometry/body/measurements.h"
 #include "geometry/design/design.h"
+#include "geometry/design/make_piece_renderer.h"
 #include "geometry/design/piece_renderer.h"
 #include "geometry/garment/garment.h"
 #include "geometry/mesh/mesh_pattern.h"
@@ -41,6 +42,7 @@ struct PipelineState {
   geometry::Design design;
   geometry::Finishing finishing;
   std::unique_ptr<geometry::PieceRenderer> renderer;
+  geometry::RenderOptions render_options;         ///< the design stage's renderer (defaults: 600 dpi accuracy)
   std::vector<geometry::Marker> markers;          ///< as nested, each in its own frame
   geometry::Marker roll;                          ///< all markers one after another on the roll
   std::vector<double> marker_start_mm;            ///< where each marker starts on the roll

@@ -14,6 +14,8 @@
 
 namespace tp::host {
 
+class StudioCache;
+
 struct HttpServer::Impl {
   HttpConfig config;
   HttpBackend backend;
@@ -25,6 +27,7 @@ struct HttpServer::Impl {
   std::atomic<int> uploads{0};
   std::atomic<std::uint64_t> upload_serial{0};
   int port = 0;
+  std::shared_ptr<StudioCache> studio;  ///< design-studio garments (http_routes_studio.cpp)
 
   /// This thread's connection to the job store (SQLite connections are not shared).
   JobStore* store();
@@ -47,6 +50,8 @@ void add_job_routes(HttpServer::Impl& im);
 void add_upload_route(HttpServer::Impl& im);
 /// GET /api/v1/events (Server-Sent Events) and GET /api/v1/printer.
 void add_event_routes(HttpServer::Impl& im);
+/// /api/v1/studio/garments... (design studio) and the studio page at /studio/.
+void add_studio_routes(HttpServer::Impl& im);
 /// GET / and the console's assets (HttpConfig::console_dir), GET /vendor/three/... (three_dir).
 /// Registered last: its catch-all takes every GET outside /api/ no other route matched.
 void add_static_routes(HttpServer::Impl& im);

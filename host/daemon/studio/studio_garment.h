@@ -1,0 +1,64 @@
+// host/daemon/studio/studio_garment.h: one design-studio garment: the garment section a designer
+// chose, sewn once by the pipeline's own stages, its mesh for the browser and its session folder
+// (uploaded assets, previews), from which previews and job packages are made.
+#pragma once
+
+#include <filesystem>
+#include <mutex>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "geometry/common/cancel.h"
+#include "host/common/error.h"
+#include "host/job/job.h"
+#include "host/job/package.h"
+#include "host/pipeline/job_garment.h"
+
+namespace tp::host {
+
+/// Resolution of the studio's preview atlas (pieces at this dpi), and the mesh edge its garment
+/// is sewn with: both chosen so a garment sews in seconds and a preview renders well under a
+/// second on two cores.
+inline constexpr double kStudioPreviewDpi = 16;
+inline constexpr const char* kStudioMeshEdge = "25 mm";
+
+/// The renderer's accuracy for previews: a quarter of a preview pixel, not of a print pixel.
+[[nodiscard]] geometry::RenderOptions studio_render_options(double dpi);
+
+/// A sewn studio garment. The session folder is the package root: `assets/` holds the uploads
+/// (pattern, body, images, textured OBJs) that the design's asset paths name.
+struct StudioGarment {
+  std::string id;
+  std::filesystem::path dir;       ///< session folder (removed with the garment)
+  nlohmann::json garment_section;  ///< job.json's "garment" object, asset paths relative to dir
+  JobGarment sewn;
+  std::string obj;  ///< the garment mesh, UVs into the preview atlas (0..1), mm
+  int atlas_width_px = 0, atlas_height_px = 0;
+  double atlas_dpi = 0;
+  double sew_seconds = 0;
+  std::mutex mu;  ///< one preview or package at a time per garment
+
+  ~StudioGarment();
+  /// The garment's description for the API: id, pieces, mode, timings, URLs.
+  [[nodiscard]] nlohmann::json describe() const;
+};
+
+/// The job.json text of a studio job: the garment's section with `rest` (design, finishing,
+/// marker, print, name; each optional) merged in, and a default marker width.
+[[nodiscard]] std::string studio_manifest(const StudioGarment& g, const nlohmann::json& rest);
+
+/// Writes `manifest` as the session folder's job.json and parses it with the product's validator: the
+/// errors are the same "job.json: /pointer: what" lines `printctl validate` prints.
+[[nodiscard]] Result<Job> parse_studio_job(const StudioGarment& g, const std::string& manifest,
+                                           const PackageLimits& limits);
+
+/// Sews `garment_section` (asset paths relative to `dir`, which exists) at the studio's mesh edge,
+/// undraped, and renders the blank atlas to map the mesh's UVs. Fails naming the field or stage.
+[[nodiscard]] Result<std::unique_ptr<StudioGarment>> sew_studio_garment(std::string id,
+                                                                        const std::filesystem::path& dir,
+                                                                        nlohmann::json garment_section,
+                                                                        const PackageLimits& limits,
+                                                                        const geometry::CancelToken& cancel);
+
+}  // namespace tp::host
