@@ -35,7 +35,7 @@ export async function mount(container, context) {
   const css = new URL("./studio.css", import.meta.url).href;
   if (![...document.styleSheets].some((sheet) => sheet.href === css))
     document.head.append(Object.assign(document.createElement("link"), { rel: "stylesheet", href: css }));
-  const base = container.dataset.threeBase || (context ? "/vendor/three/" : "/studio/three/");
+  const base = container.dataset.threeBase || "/vendor/three/";
   const lib = await loadThree(base);
   const status = h("p", { class: "st-status", role: "status", "aria-live": "polite" }, "Choose a garment and sew it.");
   const problems = h("ul", { class: "st-problems", "aria-live": "polite" });

@@ -89,7 +89,9 @@ void add_static_routes(HttpServer::Impl& im) {
   // Every other path outside /api/ is a console asset (studio/ included), no symlinks followed.
   svr.Get(R"(/((?!api/|vendor/).+))", [console, missing](const httplib::Request& req, httplib::Response& res) {
     if (console.empty()) return send_error(res, 404, missing);
-    auto file = job_file_path(console, req.matches[1]);
+    std::string name = req.matches[1];
+    if (name.ends_with('/')) name += "index.html";  // a folder's page, e.g. /studio/
+    auto file = job_file_path(console, name);
     if (!file) return send_refusal(res, file.error());
     send_file(req, res, *file, "no-cache");
   });

@@ -25,21 +25,6 @@ namespace {
 constexpr std::size_t kStudioJsonMaxBytes = 16u << 20;  ///< a design or settings body (max_manifest_bytes)
 constexpr std::size_t kStudioGarments = 8;              ///< garments kept at once
 constexpr int kStudioSewsAtOnce = 2;
-constexpr const char* kThreeDir = "/usr/share/javascript/three";
-
-// Where the studio page lives: $TP_STUDIO_DIR, the installed share folder, or the source tree
-// beside a build's bin/.
-fs::path studio_dir() {
-  if (const char* env = std::getenv("TP_STUDIO_DIR"); env && *env) return env;
-  std::error_code ec;
-  const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
-  if (!ec) {
-    for (const fs::path& p : {exe.parent_path().parent_path() / "share/printd/console/studio",
-                              exe.parent_path().parent_path().parent_path() / "host/console/studio"})
-      if (fs::is_regular_file(p / "index.html", ec)) return p;
-  }
-  return "/usr/share/printd/console/studio";
-}
 
 // A validation failure as the API answers it everywhere: 422 with the problems listed.
 void send_failure(httplib::Response& res, const Error& e) {
@@ -354,16 +339,12 @@ void add_studio_routes(HttpServer::Impl& im) {
     res.set_content(s.str(), "application/zip");
   });
 
-  // The page itself, and three.js from Debian's libjs-three, for a studio opened on its own.
-  const fs::path page = studio_dir();
+  // The page is a console asset (console_dir/studio/, served by the static routes with three.js at
+  // /vendor/three/); a bare /studio goes to its folder.
   im.server->Get("/studio", [](const httplib::Request&, httplib::Response& res) {
     res.status = 302;
     res.set_header("Location", "/studio/");
   });
-  if (!im.server->set_mount_point("/studio/three", kThreeDir))
-    spdlog::warn("printd: {}: three.js is not installed (libjs-three); the studio page cannot draw", kThreeDir);
-  if (!im.server->set_mount_point("/studio", page.string()))
-    spdlog::warn("printd: {}: no studio page there (set TP_STUDIO_DIR)", page.string());
 }
 
 }  // namespace tp::host::http

@@ -43,7 +43,6 @@ class StudioDaemon {
     if (pid_ == 0) {
       const std::string log = (root_ / "printd.log").string();
       if (std::freopen(log.c_str(), "a", stdout)) ::dup2(::fileno(stdout), 2);
-      ::setenv("TP_STUDIO_DIR", (source_dir() / "host/console/studio").c_str(), 1);
       std::vector<std::string> args = {(bin_dir() / "printd").string(),
                                        "--state-dir",
                                        (root_ / "state").string(),

@@ -47,7 +47,7 @@ class Daemon:
                             "--out", model], check=True, stdout=subprocess.DEVNULL)
             cmd = [os.path.join(BIN, "printsim"), "run", "--job-dirs", "--out", os.path.join(root, "out"),
                    "--printer", model, "--"] + printd
-        env = dict(os.environ, TP_STUDIO_DIR=os.path.join(SOURCE, "host/console/studio"))
+        env = dict(os.environ)
         self.log = open(self.log_path, "w")
         self.proc = subprocess.Popen(cmd, stdout=self.log, stderr=subprocess.STDOUT, start_new_session=True, env=env)
         self.port = 0
