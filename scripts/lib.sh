@@ -24,6 +24,7 @@ TP_PACKAGES=(
   libjs-three chromium chromium-driver python3-selenium  # browser viewer check of garment.obj
   argyll  # printctl calibrate: targen, colprof, profcheck (docs/colour.md)
   libcpp-httplib-dev libssl-dev openssl  # printd's HTTP API (TLS via OpenSSL); the tests make a cert
+  libfreetype-dev libharfbuzz-dev fonts-dejavu-core  # text design layers (FreeType, HarfBuzz, DejaVu)
   systemd dpkg-dev wrk  # systemd-analyze verify and dpkg-shlibdeps for the .deb test; HTTP load figures
 )
 
