@@ -10,6 +10,7 @@
 #include "host/common/atomic_file.h"
 #include "host/common/text.h"
 #include "host/pipeline/internal/order_run.h"
+#include "host/pipeline/internal/peak_rss.h"
 #include "host/pipeline/internal/pipeline_state.h"
 #include "host/pipeline/internal/stage_tracker.h"
 
@@ -106,10 +107,17 @@ Status run_job(const Job& job, const RunOptions& options, const geometry::Cancel
   }
   for (const auto& [stage, fn] : job.order ? order_stages : stages) {
     if (!result) break;
+    // The RIP's memory: the resident peak while the print stage runs, against what the job held before.
+    const std::optional<double> rss_before = stage == Stage::kPrint ? internal::resident_mib() : std::nullopt;
+    const bool peak_reset = rss_before && internal::reset_peak_resident();
     result = tracker.run(stage, [&] {
       ps.stage_reused = false;
       return fn(ps);
     }, &ps.stage_reused);
+    if (peak_reset && report.contains("rip") && report["rip"].is_object())
+      if (auto peak = internal::peak_resident_mib())
+        report["rip"]["memory"] = {{"rss_before_mib", *rss_before}, {"peak_rss_mib", *peak},
+                                   {"peak_above_before_mib", std::max(0.0, *peak - *rss_before)}};
   }
 
   internal::finish_order_report(report);
