@@ -53,8 +53,9 @@ nlohmann::json reprojection_json(const std::vector<DesignLayerSpec>& base_layers
       e["width_mm"] = b.type == "planar" ? l.width_mm : l.text_size_mm;
       e["size_ratio"] = b.type == "planar" ? (b.width_mm > 0 ? l.width_mm / b.width_mm : 1.0)
                                            : l.text_size_mm / b.text_size_mm;
-      if (map) {
-        // The landmark check holds in placement "body"; in "graded" the offset scales.
+      if (map && b.normal[2] > 0.5) {
+        // Front-facing layers against the centre-front bust point: the landmark check holds in
+        // placement "body"; in "graded" the offset scales.
         const geometry::Vec3 bb = centre_front_bust_point(map->base_measurements());
         const geometry::Vec3 tb = centre_front_bust_point(map->target_measurements());
         const geometry::Vec3 off{b.centre_mm[0] - bb.x, b.centre_mm[1] - bb.y, b.centre_mm[2] - bb.z};
@@ -149,6 +150,9 @@ Status stage_order_design(PipelineState& ps) {
   std::vector<OrderPiece> pieces;
   nlohmann::json sizes = nlohmann::json::array(), copies = nlohmann::json::array();
   int copy_no = 0;
+  // Copies are personalised when a text layer takes fields from them: each then has its own renderer.
+  bool personal = false;
+  for (const DesignLayerSpec& l : ps.job.design) personal = personal || (l.type == "text" && !template_fields(l.text).empty());
   double x_offset_mm = 0;
   for (size_t si = 0; si < run.sizes.size(); ++si) {
     OrderSizeRun& s = *run.sizes[si];
@@ -170,6 +174,7 @@ Status stage_order_design(PipelineState& ps) {
     size_report["reprojection"] = {{"placement", map ? order.placement : (si == run.base ? "base" : "unmapped")},
                                    {"layers", reprojection_json(ps.job.design, layers, map ? &*map : nullptr)}};
     std::shared_ptr<OrderCopyRun> first;
+    std::shared_ptr<const geometry::PieceRenderer> size_renderer;
     for (int q = 0; q < s.spec.quantity; ++q) {
       auto c = std::make_shared<OrderCopyRun>();
       c->copy = ++copy_no;
@@ -180,15 +185,29 @@ Status stage_order_design(PipelineState& ps) {
       c->job.design = layers;
       for (DesignLayerSpec& l : c->job.design)
         if (l.type == "text") l.text = fill_template(l.text, c->fields);
-      c->ps = std::make_unique<PipelineState>(c->job, s.options, ps.cancel, c->report);
-      c->ps->pattern = s.ps->pattern;
-      c->ps->garment = s.ps->garment;
-      c->ps->garment_is_3d = s.ps->garment_is_3d;
-      c->ps->body = s.ps->body;
-      c->ps->measurements = s.ps->measurements;
-      if (auto st = stage_design(*c->ps); !st)
-        return fail(st.error().with_context("order size '" + s.spec.size + "' copy " + std::to_string(c->copy)));
-      std::shared_ptr<const geometry::PieceRenderer> renderer(std::move(c->ps->renderer));
+      std::shared_ptr<const geometry::PieceRenderer> renderer;
+      if (first && !personal) {
+        // Copies that differ in nothing print the same pieces: they share the size's renderer
+        // (its labels name the size and the job; the marker and cut files name each copy).
+        c->job.name = first->job.name;
+        c->ps = std::make_unique<PipelineState>(c->job, s.options, ps.cancel, c->report);
+        c->ps->finishing = first->ps->finishing;
+        c->report["design"] = first->report["design"];
+        renderer = size_renderer;
+      } else {
+        if (!personal) c->job.name = ps.job.name;
+        c->ps = std::make_unique<PipelineState>(c->job, s.options, ps.cancel, c->report);
+        c->ps->pattern = s.ps->pattern;
+        c->ps->garment = s.ps->garment;
+        c->ps->garment_is_3d = s.ps->garment_is_3d;
+        c->ps->body = s.ps->body;
+        c->ps->measurements = s.ps->measurements;
+        if (auto st = stage_design(*c->ps); !st)
+          return fail(st.error().with_context("order size '" + s.spec.size + "' copy " + std::to_string(c->copy)));
+        renderer = std::shared_ptr<const geometry::PieceRenderer>(std::move(c->ps->renderer));
+        // The copy's own pattern and garment are no longer needed: the renderer keeps what it samples.
+        size_renderer = renderer;
+      }
       // Merge: this copy's pieces (renamed "<piece>.<size>.<copy>"), stitches and 3D garment.
       const int first_piece = static_cast<int>(ps.pattern.pieces.size());
       const int first_vertex = static_cast<int>(ps.garment->vertices_mm.size());
@@ -249,6 +268,9 @@ Status stage_order_design(PipelineState& ps) {
           size_report["allowance"] = stats_json(cont->allowance);
         }
       }
+      // The copy's pattern and garment were only the renderer's input: the order's merged ones remain.
+      c->ps->garment.reset();
+      c->ps->pattern = {};
       run.copies.push_back(c);
     }
     sizes.push_back(std::move(size_report));
