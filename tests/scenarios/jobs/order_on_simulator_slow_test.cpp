@@ -34,13 +34,13 @@ const char* kOrderJob = R"({
   "print": {"printer": "sim", "dpi": 75, "preview_dpi": 20}
 })";
 
-// Pixels of a piece image close to the number's ink.
-long ink_pixels(const fs::path& png) {
+// Pixels of a piece image close to an ink colour (default: the number's).
+long ink_pixels(const fs::path& png, int r = 20, int g = 30, int b = 90) {
   auto img = rip::read_image(png);
   if (!img) return -1;
   long n = 0;
   for (const auto& p : img->pixels)
-    n += p.a > 200 && std::abs(p.r - 20) < 12 && std::abs(p.g - 30) < 12 && std::abs(p.b - 90) < 12;
+    n += p.a > 200 && std::abs(p.r - r) < 12 && std::abs(p.g - g) < 12 && std::abs(p.b - b) < 12;
   return n;
 }
 
@@ -107,6 +107,13 @@ TEST(OrderOnSimulator, OneMarkerEveryPieceEachCopyItsOwnText) {
   EXPECT_GT(back2, 50);
   EXPECT_NE(back1, back2);  // "7" and "10" do not ink the same area
   EXPECT_EQ(front1, 0);
+
+  // The side sweep crosses the left side seam in every size: inked on the left front and back.
+  for (const char* copy : {"S.1", "M.3"}) {
+    EXPECT_GT(ink_pixels(out / "pieces" / ("front_l." + std::string(copy) + ".png"), 200, 30, 60), 20) << copy;
+    EXPECT_GT(ink_pixels(out / "pieces" / ("back_l." + std::string(copy) + ".png"), 200, 30, 60), 20) << copy;
+    EXPECT_EQ(ink_pixels(out / "pieces" / ("front_r." + std::string(copy) + ".png"), 200, 30, 60), 0) << copy;
+  }
 }
 
 }  // namespace
