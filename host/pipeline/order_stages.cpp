@@ -171,8 +171,12 @@ Status stage_order_design(PipelineState& ps) {
                                   {"files_dir", "sizes/" + s.stem},
                                   {"copies", nlohmann::json::array()}};
     if (s.report.contains("sewing")) size_report["sewing"] = s.report["sewing"];
+    // The base size reports its own landmarks too (an identity mapping), so every size can be checked.
+    std::optional<SizeMapping> identity;
+    if (si == run.base && base.ps->measurements) identity.emplace(*base.ps->measurements, *base.ps->measurements, graded);
+    const SizeMapping* report_map = map ? &*map : identity ? &*identity : nullptr;
     size_report["reprojection"] = {{"placement", map ? order.placement : (si == run.base ? "base" : "unmapped")},
-                                   {"layers", reprojection_json(ps.job.design, layers, map ? &*map : nullptr)}};
+                                   {"layers", reprojection_json(ps.job.design, layers, report_map)}};
     std::shared_ptr<OrderCopyRun> first;
     std::shared_ptr<const geometry::PieceRenderer> size_renderer;
     for (int q = 0; q < s.spec.quantity; ++q) {
