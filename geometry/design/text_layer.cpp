@@ -22,15 +22,21 @@ namespace {
 // Owners of the FreeType and HarfBuzz objects, released in reverse order.
 struct FtLibrary {
   FT_Library lib = nullptr;
-  ~FtLibrary() { if (lib) FT_Done_FreeType(lib); }
+  ~FtLibrary() {
+    if (lib) FT_Done_FreeType(lib);
+  }
 };
 struct FtFace {
   FT_Face face = nullptr;
-  ~FtFace() { if (face) FT_Done_Face(face); }
+  ~FtFace() {
+    if (face) FT_Done_Face(face);
+  }
 };
 struct HbFont {
   hb_font_t* font = nullptr;
-  ~HbFont() { if (font) hb_font_destroy(font); }
+  ~HbFont() {
+    if (font) hb_font_destroy(font);
+  }
 };
 struct HbBuffer {
   hb_buffer_t* buf = hb_buffer_create();
@@ -38,11 +44,15 @@ struct HbBuffer {
 };
 struct FtGlyph {
   FT_Glyph glyph = nullptr;
-  ~FtGlyph() { if (glyph) FT_Done_Glyph(glyph); }
+  ~FtGlyph() {
+    if (glyph) FT_Done_Glyph(glyph);
+  }
 };
 struct FtStroker {
   FT_Stroker stroker = nullptr;
-  ~FtStroker() { if (stroker) FT_Stroker_Done(stroker); }
+  ~FtStroker() {
+    if (stroker) FT_Stroker_Done(stroker);
+  }
 };
 
 // A coverage raster (0..1 per pixel) the glyph bitmaps are max-combined into.
@@ -68,7 +78,8 @@ struct Coverage {
 // baseline, in 26.6 pixel units, into `cov` whose origin is (origin_x, origin_y) in the same frame.
 std::string rasterise(FT_Face face, FT_Library lib, unsigned gid, double pen_x, double pen_y, double stroke_px,
                       Coverage& cov) {
-  if (FT_Load_Glyph(face, gid, FT_LOAD_NO_HINTING | FT_LOAD_NO_BITMAP)) return "cannot load glyph " + std::to_string(gid);
+  if (FT_Load_Glyph(face, gid, FT_LOAD_NO_HINTING | FT_LOAD_NO_BITMAP))
+    return "cannot load glyph " + std::to_string(gid);
   FtGlyph g;
   if (FT_Get_Glyph(face->glyph, &g.glyph)) return "cannot copy glyph " + std::to_string(gid);
   if (stroke_px > 0) {
@@ -81,7 +92,8 @@ std::string rasterise(FT_Face face, FT_Library lib, unsigned gid, double pen_x, 
   // Sub-pixel pen position: the fractional part moves the outline before it is rasterised.
   const double fx = pen_x - std::floor(pen_x), fy = pen_y - std::floor(pen_y);
   FT_Vector delta{static_cast<FT_Pos>(std::lround(fx * 64)), static_cast<FT_Pos>(std::lround(-fy * 64))};
-  if (FT_Glyph_To_Bitmap(&g.glyph, FT_RENDER_MODE_NORMAL, &delta, 1)) return "cannot rasterise glyph " + std::to_string(gid);
+  if (FT_Glyph_To_Bitmap(&g.glyph, FT_RENDER_MODE_NORMAL, &delta, 1))
+    return "cannot rasterise glyph " + std::to_string(gid);
   auto* bg = reinterpret_cast<FT_BitmapGlyph>(g.glyph);
   cov.add(bg->bitmap, static_cast<int>(std::floor(pen_x)) + bg->left, static_cast<int>(std::floor(pen_y)) - bg->top);
   return {};
@@ -94,7 +106,8 @@ std::uint8_t to_u8(double v) { return static_cast<std::uint8_t>(std::clamp(std::
 Result<TextImage> render_text_image(const std::string& text, const TextStyle& style) {
   if (text.empty()) return fail(ErrorCode::kInvalidArgument, "text layer: the text is empty");
   if (!(style.cap_height_mm >= 1 && style.cap_height_mm <= 2000))
-    return fail(ErrorCode::kInvalidArgument, "text layer: size " + std::to_string(style.cap_height_mm) + " mm outside 1..2000");
+    return fail(ErrorCode::kInvalidArgument,
+                "text layer: size " + std::to_string(style.cap_height_mm) + " mm outside 1..2000");
   if (!(style.outline_mm >= 0 && style.outline_mm <= style.cap_height_mm))
     return fail(ErrorCode::kInvalidArgument, "text layer: outline wider than the letters are tall");
   if (!(style.px_per_mm >= 1 && style.px_per_mm <= 50))
@@ -106,7 +119,8 @@ Result<TextImage> render_text_image(const std::string& text, const TextStyle& st
   FtLibrary lib;
   if (FT_Init_FreeType(&lib.lib)) return fail(ErrorCode::kIo, "text layer: FreeType did not start");
   FtFace face;
-  if (FT_New_Face(lib.lib, font.c_str(), 0, &face.face)) return fail(ErrorCode::kParse, font + ": not a font FreeType reads");
+  if (FT_New_Face(lib.lib, font.c_str(), 0, &face.face))
+    return fail(ErrorCode::kParse, font + ": not a font FreeType reads");
   if (!FT_IS_SCALABLE(face.face)) return fail(ErrorCode::kParse, font + ": not a scalable (outline) font");
 
   // The em size that makes a capital H cap_height_mm tall.

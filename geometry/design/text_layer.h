@@ -16,11 +16,11 @@ inline constexpr const char* kDefaultTextFont = "/usr/share/fonts/truetype/dejav
 /// How a text layer looks. Lengths are mm on the garment.
 struct TextStyle {
   std::filesystem::path font_file = kDefaultTextFont;
-  double cap_height_mm = 40;      ///< height of a capital letter ("H") on the garment
+  double cap_height_mm = 40;  ///< height of a capital letter ("H") on the garment
   Rgba8 colour{0, 0, 0, 255};
-  double outline_mm = 0;          ///< outline width around every glyph (0: none)
+  double outline_mm = 0;  ///< outline width around every glyph (0: none)
   Rgba8 outline_colour{255, 255, 255, 255};
-  double px_per_mm = 10;          ///< image resolution (10 px/mm = 254 dpi)
+  double px_per_mm = 10;  ///< image resolution (10 px/mm = 254 dpi)
 };
 
 /// The rendered text: an RGBA image, transparent where there is no ink, and its size in mm
@@ -29,7 +29,7 @@ struct TextImage {
   ImageRgba8 image;
   double width_mm = 0;
   double height_mm = 0;
-  int glyphs = 0;                 ///< glyphs placed by the shaper
+  int glyphs = 0;  ///< glyphs placed by the shaper
 };
 
 /// Shapes `text` (UTF-8, one line) with the font and renders it. Deterministic: the same text,

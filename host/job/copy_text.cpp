@@ -33,19 +33,25 @@ void walk(const std::string& text, L literal, F field) {
 
 std::vector<std::string> template_fields(const std::string& text) {
   std::vector<std::string> out;
-  walk(text, [](char) {}, [&](const std::string& f) {
-    if (std::find(out.begin(), out.end(), f) == out.end()) out.push_back(f);
-  });
+  walk(
+      text, [](char) {},
+      [&](const std::string& f) {
+        if (std::find(out.begin(), out.end(), f) == out.end()) out.push_back(f);
+      });
   return out;
 }
 
 std::string fill_template(const std::string& text, const CopyFields& copy, std::vector<std::string>* missing) {
   std::string out;
-  walk(text, [&](char c) { out += c; }, [&](const std::string& f) {
-    auto it = std::find_if(copy.begin(), copy.end(), [&](const auto& kv) { return kv.first == f; });
-    if (it != copy.end()) out += it->second;
-    else if (missing) missing->push_back(f);
-  });
+  walk(
+      text, [&](char c) { out += c; },
+      [&](const std::string& f) {
+        auto it = std::find_if(copy.begin(), copy.end(), [&](const auto& kv) { return kv.first == f; });
+        if (it != copy.end())
+          out += it->second;
+        else if (missing)
+          missing->push_back(f);
+      });
   return out;
 }
 

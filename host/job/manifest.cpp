@@ -127,7 +127,8 @@ void read_garment(FieldReader g, const JobPackage* pkg, GarmentSpec& spec) {
 void read_colour(FieldReader& l, const std::string& key, std::array<int, 4>& out) {
   if (auto v = l.vector<4>(key, false, false)) {
     for (int i = 0; i < 4; ++i) {
-      if ((*v)[i] < 0 || (*v)[i] > 255) l.problems().add(l.pointer_of(key) + "/" + std::to_string(i), "channel outside 0..255");
+      if ((*v)[i] < 0 || (*v)[i] > 255)
+        l.problems().add(l.pointer_of(key) + "/" + std::to_string(i), "channel outside 0..255");
       out[i] = static_cast<int>((*v)[i]);
     }
   }

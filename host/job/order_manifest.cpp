@@ -23,9 +23,12 @@ std::vector<std::string> csv_fields(const std::string& line, bool& ok) {
   for (size_t i = 0; i < line.size(); ++i) {
     const char c = line[i];
     if (quoted) {
-      if (c == '"' && i + 1 < line.size() && line[i + 1] == '"') out.back() += '"', ++i;
-      else if (c == '"') quoted = false;
-      else out.back() += c;
+      if (c == '"' && i + 1 < line.size() && line[i + 1] == '"')
+        out.back() += '"', ++i;
+      else if (c == '"')
+        quoted = false;
+      else
+        out.back() += c;
     } else if (c == '"') {
       quoted = true;
     } else if (c == ',') {
@@ -79,7 +82,8 @@ void read_order(FieldReader o, const JobPackage* pkg, Job& job) {
   OrderSpec spec;
   Problems& problems = o.problems();
   const GarmentSpec& g = job.garment;
-  if (g.garment_mesh) problems.add(o.pointer(), "an order needs a pattern or a sample garment to grade, not a garment_mesh");
+  if (g.garment_mesh)
+    problems.add(o.pointer(), "an order needs a pattern or a sample garment to grade, not a garment_mesh");
   const bool imported = g.pattern.has_value();
   if (auto v = o.choice("placement", false, {"body", "graded"})) spec.placement = *v;
   std::set<std::string> names;
@@ -99,7 +103,8 @@ void read_order(FieldReader o, const JobPackage* pkg, Job& job) {
     const std::string label = "size '" + sz.size + "'";
     read_asset(s, "pattern", imported, pkg, sz.pattern);
     if (!imported && s.has("pattern"))
-      problems.add(s.pointer_of("pattern"), label + ": the job's garment is a sample, drafted per size; no pattern file");
+      problems.add(s.pointer_of("pattern"),
+                   label + ": the job's garment is a sample, drafted per size; no pattern file");
     if (auto body = s.object("body", false)) {
       body->reject_unknown({"dress_form"});
       if (auto df = body->object("dress_form", true)) {
@@ -115,14 +120,17 @@ void read_order(FieldReader o, const JobPackage* pkg, Job& job) {
     spec.sizes.push_back(std::move(sz));
   }
   spec.base_size = g.size;
-  if (auto v = o.string("base_size", false)) spec.base_size = *v;
-  else if (!names.empty() && !names.count(g.size)) spec.base_size = spec.sizes.front().size;
+  if (auto v = o.string("base_size", false))
+    spec.base_size = *v;
+  else if (!names.empty() && !names.count(g.size))
+    spec.base_size = spec.sizes.front().size;
   if (!names.empty() && !names.count(spec.base_size))
     problems.add(o.has("base_size") ? o.pointer_of("base_size") : o.pointer(),
                  "base size '" + spec.base_size + "' is not one of the order's sizes");
   if (spec.garments() > kMaxGarments) problems.add(o.pointer_of("sizes"), "more than 1000 garments in one order");
 
-  if (o.has("copies") && o.has("copies_csv")) problems.add(o.pointer(), "give either \"copies\" or \"copies_csv\", not both");
+  if (o.has("copies") && o.has("copies_csv"))
+    problems.add(o.pointer(), "give either \"copies\" or \"copies_csv\", not both");
   // Each copy: an object of field -> string or whole number (non-objects are reported here).
   const auto copy_readers = o.objects("copies", false);
   if (const nlohmann::json* raw = o.raw("copies"); raw && raw->is_array() && copy_readers.size() == raw->size()) {
@@ -131,10 +139,14 @@ void read_order(FieldReader o, const JobPackage* pkg, Job& job) {
       CopyFields copy;
       if (c.is_object())
         for (auto it = c.begin(); it != c.end(); ++it) {
-          const std::string ptr = o.pointer_of("copies") + "/" + std::to_string(k) + "/" + escape_pointer_token(it.key());
-          if (it->is_string()) copy.emplace_back(it.key(), it->get<std::string>());
-          else if (it->is_number_integer()) copy.emplace_back(it.key(), std::to_string(it->get<std::int64_t>()));
-          else problems.add(ptr, "a copy's field is a string or a whole number");
+          const std::string ptr =
+              o.pointer_of("copies") + "/" + std::to_string(k) + "/" + escape_pointer_token(it.key());
+          if (it->is_string())
+            copy.emplace_back(it.key(), it->get<std::string>());
+          else if (it->is_number_integer())
+            copy.emplace_back(it.key(), std::to_string(it->get<std::int64_t>()));
+          else
+            problems.add(ptr, "a copy's field is a string or a whole number");
         }
       spec.copies.push_back(std::move(copy));
     }
@@ -156,7 +168,8 @@ void check_text_layers(const Job& job, Problems& problems) {
     const auto fields = template_fields(l.text);
     if (fields.empty()) continue;
     if (!job.order || job.order->copies.empty()) {
-      problems.add(ptr, "'" + l.text + "' takes {" + fields.front() + "} from the order's copies, and the job has none");
+      problems.add(ptr,
+                   "'" + l.text + "' takes {" + fields.front() + "} from the order's copies, and the job has none");
       continue;
     }
     for (size_t k = 0; k < job.order->copies.size(); ++k) {

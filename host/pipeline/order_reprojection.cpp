@@ -11,14 +11,14 @@ namespace {
 using geometry::Vec3;
 
 std::vector<double> landmark_heights(const geometry::DressFormLandmarks& l) {
-  return {l.bottom_y, l.knee_y, l.hip_y, l.waist_y, l.underbust_y, l.bust_y,
-          l.armpit_y, l.shoulder_y, l.nape_y, l.neck_top_y};
+  return {l.bottom_y, l.knee_y,   l.hip_y,      l.waist_y, l.underbust_y,
+          l.bust_y,   l.armpit_y, l.shoulder_y, l.nape_y,  l.neck_top_y};
 }
 
 // A direction around the body: the section's normalised (u, v) scaled onto its superellipse.
 struct SectionPoint {
-  double u = 0, v = 0;     ///< normalised coordinates of the point (surface where rho == 1)
-  double rho = 0;          ///< superellipse radius of the point (0 on the axis)
+  double u = 0, v = 0;  ///< normalised coordinates of the point (surface where rho == 1)
+  double rho = 0;       ///< superellipse radius of the point (0 on the axis)
 };
 
 SectionPoint to_section(const geometry::TorsoSection& s, double x, double z) {
@@ -38,9 +38,13 @@ std::pair<double, double> from_section(const geometry::TorsoSection& s, double u
 }  // namespace
 
 SizeMapping::SizeMapping(const geometry::BodyMeasurements& base, const geometry::BodyMeasurements& target, bool graded)
-    : base_(base), target_(target), base_lm_(geometry::dress_form_landmarks(base)),
-      target_lm_(geometry::dress_form_landmarks(target)), ys_base_(landmark_heights(base_lm_)),
-      ys_target_(landmark_heights(target_lm_)), graded_(graded) {}
+    : base_(base),
+      target_(target),
+      base_lm_(geometry::dress_form_landmarks(base)),
+      target_lm_(geometry::dress_form_landmarks(target)),
+      ys_base_(landmark_heights(base_lm_)),
+      ys_target_(landmark_heights(target_lm_)),
+      graded_(graded) {}
 
 double SizeMapping::map_height_mm(double y) const {
   // Below the lowest and above the highest landmark: the nearest landmark's shift.
@@ -72,7 +76,8 @@ Vec3 SizeMapping::map_point(const Vec3& p) const {
   // The surface point in the same direction on both sections; the offset from it is kept in mm.
   const double us = q.u / q.rho, vs = q.v / q.rho;
   const auto [bx, bz] = from_section(sb, us, vs);
-  const double rt = std::pow(std::pow(std::abs(us), st.exponent) + std::pow(std::abs(vs), st.exponent), 1 / st.exponent);
+  const double rt =
+      std::pow(std::pow(std::abs(us), st.exponent) + std::pow(std::abs(vs), st.exponent), 1 / st.exponent);
   const auto [tx, tz] = from_section(st, us / rt, vs / rt);
   return {tx + (p.x - bx), y, tz + (p.z - bz)};
 }

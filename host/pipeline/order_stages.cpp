@@ -51,8 +51,8 @@ nlohmann::json reprojection_json(const std::vector<DesignLayerSpec>& base_layers
     if (b.type == "planar" || b.type == "text") {
       e["centre_mm"] = l.centre_mm;
       e["width_mm"] = b.type == "planar" ? l.width_mm : l.text_size_mm;
-      e["size_ratio"] = b.type == "planar" ? (b.width_mm > 0 ? l.width_mm / b.width_mm : 1.0)
-                                           : l.text_size_mm / b.text_size_mm;
+      e["size_ratio"] =
+          b.type == "planar" ? (b.width_mm > 0 ? l.width_mm / b.width_mm : 1.0) : l.text_size_mm / b.text_size_mm;
       if (map && b.normal[2] > 0.5) {
         // Front-facing layers against the centre-front bust point: the landmark check holds in
         // placement "body"; in "graded" the offset scales.
@@ -152,7 +152,8 @@ Status stage_order_design(PipelineState& ps) {
   int copy_no = 0;
   // Copies are personalised when a text layer takes fields from them: each then has its own renderer.
   bool personal = false;
-  for (const DesignLayerSpec& l : ps.job.design) personal = personal || (l.type == "text" && !template_fields(l.text).empty());
+  for (const DesignLayerSpec& l : ps.job.design)
+    personal = personal || (l.type == "text" && !template_fields(l.text).empty());
   double x_offset_mm = 0;
   for (size_t si = 0; si < run.sizes.size(); ++si) {
     OrderSizeRun& s = *run.sizes[si];
@@ -173,7 +174,8 @@ Status stage_order_design(PipelineState& ps) {
     if (s.report.contains("sewing")) size_report["sewing"] = s.report["sewing"];
     // The base size reports its own landmarks too (an identity mapping), so every size can be checked.
     std::optional<SizeMapping> identity;
-    if (si == run.base && base.ps->measurements) identity.emplace(*base.ps->measurements, *base.ps->measurements, graded);
+    if (si == run.base && base.ps->measurements)
+      identity.emplace(*base.ps->measurements, *base.ps->measurements, graded);
     const SizeMapping* report_map = map ? &*map : identity ? &*identity : nullptr;
     size_report["reprojection"] = {{"placement", map ? order.placement : (si == run.base ? "base" : "unmapped")},
                                    {"layers", reprojection_json(ps.job.design, layers, report_map)}};
@@ -256,8 +258,12 @@ Status stage_order_design(PipelineState& ps) {
       nlohmann::json texts = nlohmann::json::array();
       for (const DesignLayerSpec& l : c->job.design)
         if (l.type == "text") texts.push_back(l.text);
-      copies.push_back({{"copy", c->copy}, {"size", s.spec.size}, {"fields", fields}, {"texts", texts},
-                        {"label", c->job.name}, {"pieces", names}});
+      copies.push_back({{"copy", c->copy},
+                        {"size", s.spec.size},
+                        {"fields", fields},
+                        {"texts", texts},
+                        {"label", c->job.name},
+                        {"pieces", names}});
       size_report["copies"].push_back(c->copy);
       c->ps->renderer.reset();
       if (!first) {
@@ -265,7 +271,8 @@ Status stage_order_design(PipelineState& ps) {
         // Continuity of this size, as its first copy prints (every copy differs only in text).
         if (!s.ps->pattern.stitches.empty()) {
           auto cont = geometry::measure_continuity(s.ps->pattern, *s.ps->garment, c->ps->finishing, *renderer, 150);
-          if (!cont) return fail(ErrorCode::kPipeline, "order size '" + s.spec.size + "': continuity: " + cont.error().message);
+          if (!cont)
+            return fail(ErrorCode::kPipeline, "order size '" + s.spec.size + "': continuity: " + cont.error().message);
           size_report["seams"] = stats_json(cont->seams);
           size_report["seams"]["dpi"] = 150;
           size_report["seams"]["count"] = cont->seam_list.size();

@@ -95,10 +95,10 @@ Status run_job(const Job& job, const RunOptions& options, const geometry::Cancel
       {Stage::kPrint, internal::stage_print},   {Stage::kOutputs, internal::stage_outputs}};
   // An order (docs/orders.md) drafts, sews and designs every size and copy, then goes on as one job.
   const std::pair<Stage, StageFn> order_stages[] = {
-      {Stage::kIntake, internal::stage_intake}, {Stage::kPattern, internal::stage_order_pattern},
-      {Stage::kMesh, internal::stage_order_mesh}, {Stage::kGarment, internal::stage_order_garment},
+      {Stage::kIntake, internal::stage_intake},       {Stage::kPattern, internal::stage_order_pattern},
+      {Stage::kMesh, internal::stage_order_mesh},     {Stage::kGarment, internal::stage_order_garment},
       {Stage::kDesign, internal::stage_order_design}, {Stage::kMarker, internal::stage_marker},
-      {Stage::kPrint, internal::stage_print},   {Stage::kOutputs, internal::stage_outputs}};
+      {Stage::kPrint, internal::stage_print},         {Stage::kOutputs, internal::stage_outputs}};
   Status result = {};
   if (!options.plan_dir.empty()) {
     auto plan = internal::PlanStore::open(options.plan_dir);
@@ -116,7 +116,8 @@ Status run_job(const Job& job, const RunOptions& options, const geometry::Cancel
     }, &ps.stage_reused);
     if (peak_reset && report.contains("rip") && report["rip"].is_object())
       if (auto peak = internal::peak_resident_mib())
-        report["rip"]["memory"] = {{"rss_before_mib", *rss_before}, {"peak_rss_mib", *peak},
+        report["rip"]["memory"] = {{"rss_before_mib", *rss_before},
+                                   {"peak_rss_mib", *peak},
                                    {"peak_above_before_mib", std::max(0.0, *peak - *rss_before)}};
   }
 

@@ -92,7 +92,9 @@ Result<geometry::Design> build_design(const Job& job) {
       ts.outline_mm = s.outline_mm;
       ts.outline_colour = rgba(s.outline_rgba);
       auto t = geometry::render_text_image(s.text, ts);
-      if (!t) return fail(ErrorCode::kValidation, "job.json: /design/layers/" + std::to_string(i) + "/text: " + t.error().message);
+      if (!t)
+        return fail(ErrorCode::kValidation,
+                    "job.json: /design/layers/" + std::to_string(i) + "/text: " + t.error().message);
       geometry::PlanarProjection p;
       p.image = std::make_shared<const geometry::ImageRgba8>(std::move(t->image));
       p.centre_mm = vec3(s.centre_mm);

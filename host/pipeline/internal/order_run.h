@@ -18,13 +18,13 @@ struct OrderSizeRun {
   RunOptions options;
   nlohmann::json report = nlohmann::json::object();
   std::unique_ptr<PipelineState> ps;
-  std::string stem;                    ///< the size as a file name
+  std::string stem;  ///< the size as a file name
 };
 
 /// One garment of the order: a copy of a size, with its own text and labels.
 struct OrderCopyRun {
-  int copy = 0;                        ///< 1-based, over the whole order
-  size_t size = 0;                     ///< index into OrderRun::sizes
+  int copy = 0;     ///< 1-based, over the whole order
+  size_t size = 0;  ///< index into OrderRun::sizes
   CopyFields fields;
   Job job;
   nlohmann::json report = nlohmann::json::object();
@@ -35,7 +35,7 @@ struct OrderCopyRun {
 struct OrderRun {
   std::vector<std::unique_ptr<OrderSizeRun>> sizes;
   std::vector<std::shared_ptr<OrderCopyRun>> copies;
-  size_t base = 0;                     ///< index of the base size
+  size_t base = 0;  ///< index of the base size
 };
 
 [[nodiscard]] Status stage_order_pattern(PipelineState& ps);

@@ -75,8 +75,9 @@ TEST(TextLayer, AnOutlineRingsTheLettersInItsColour) {
   EXPECT_GT(yellow, 500);
   EXPECT_GT(ink_box(ringed->image).pixels, ink_box(plain->image).pixels);
   // The ring adds about 1.5 mm each side.
-  EXPECT_NEAR((ink_box(ringed->image).x1 - ink_box(ringed->image).x0) -
-                  (ink_box(plain->image).x1 - ink_box(plain->image).x0), 30, 4);
+  EXPECT_NEAR(
+      (ink_box(ringed->image).x1 - ink_box(ringed->image).x0) - (ink_box(plain->image).x1 - ink_box(plain->image).x0),
+      30, 4);
 }
 
 TEST(TextLayer, BadInputIsNamed) {

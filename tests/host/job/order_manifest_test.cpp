@@ -69,7 +69,8 @@ TEST_F(OrderManifestTest, CopiesComeFromACsvAsset) {
 }
 
 TEST_F(OrderManifestTest, BrokenOrdersNameTheSizeAndPointer) {
-  auto bad = load(R"({"sizes": [{"size": "XXL", "quantity": 1}, {"size": "M", "quantity": 0}, {"size": "M", "quantity": 1}]})");
+  auto bad = load(
+      R"({"sizes": [{"size": "XXL", "quantity": 1}, {"size": "M", "quantity": 0}, {"size": "M", "quantity": 1}]})");
   ASSERT_FALSE(bad);
   const std::string& m = bad.error().message;
   EXPECT_NE(m.find("job.json: /order/sizes/0/size: size 'XXL'"), std::string::npos) << m;
@@ -78,7 +79,8 @@ TEST_F(OrderManifestTest, BrokenOrdersNameTheSizeAndPointer) {
 
   bad = load(R"({"sizes": [{"size": "S", "quantity": 2}], "copies": [{"name": "ANNA"}]})");
   ASSERT_FALSE(bad);
-  EXPECT_NE(bad.error().message.find("/order/copies: 1 copies for 2 garments"), std::string::npos) << bad.error().message;
+  EXPECT_NE(bad.error().message.find("/order/copies: 1 copies for 2 garments"), std::string::npos)
+      << bad.error().message;
 
   bad = load(R"({"sizes": [{"size": "S", "quantity": 1}], "base_size": "L", "placement": "sideways"})");
   ASSERT_FALSE(bad);
@@ -101,7 +103,8 @@ TEST_F(OrderManifestTest, ACsvProblemNamesTheFileAndLine) {
   auto bad = load(R"({"sizes": [{"size": "S", "quantity": 2}], "copies_csv": "copies.csv"})");
   ASSERT_FALSE(bad);
   EXPECT_NE(bad.error().message.find("job.json: /order/copies_csv: copies.csv: line 3: 1 fields, the header has 2"),
-            std::string::npos) << bad.error().message;
+            std::string::npos)
+      << bad.error().message;
   bad = load(R"({"sizes": [{"size": "S", "quantity": 1}], "copies_csv": "missing.csv"})");
   ASSERT_FALSE(bad);
   EXPECT_NE(bad.error().message.find("/order/copies_csv"), std::string::npos);
@@ -111,14 +114,16 @@ TEST_F(OrderManifestTest, ImportedPatternsNeedAPatternAndBodyPerSize) {
   const std::string garment = R"({"pattern": "m.json", "size": "M", "body": {"dress_form": {"bust": "92 cm"}}})";
   auto job = load(R"({"sizes": [
       {"size": "S", "quantity": 1, "pattern": "s.json", "body": {"dress_form": {"bust": "86 cm", "waist": "68 cm"}}},
-      {"size": "M", "quantity": 1, "pattern": "m.json", "body": {"dress_form": {"bust": "92 cm"}}}]})", garment);
+      {"size": "M", "quantity": 1, "pattern": "m.json", "body": {"dress_form": {"bust": "92 cm"}}}]})",
+                  garment);
   ASSERT_TRUE(job) << job.error().message;
   EXPECT_EQ(job->order->sizes[0].pattern->filename(), "s.json");
   ASSERT_EQ(job->order->sizes[0].dress_form_mm.size(), 2u);
   EXPECT_DOUBLE_EQ(job->order->sizes[0].dress_form_mm[0].second, 860);
 
   auto bad = load(R"({"sizes": [{"size": "L", "quantity": 1, "pattern": "nope.json"},
-                                {"size": "M", "quantity": 1, "body": {"dress_form": {"bust": "92 cm"}}}]})", garment);
+                                {"size": "M", "quantity": 1, "body": {"dress_form": {"bust": "92 cm"}}}]})",
+                  garment);
   ASSERT_FALSE(bad);
   const std::string& m = bad.error().message;
   EXPECT_NE(m.find("/order/sizes/0/pattern"), std::string::npos) << m;

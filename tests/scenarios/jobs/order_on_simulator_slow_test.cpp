@@ -102,7 +102,8 @@ TEST(OrderOnSimulator, OneMarkerEveryPieceEachCopyItsOwnText) {
     back1 += ink_pixels(out / "pieces" / (std::string(piece) + ".S.1.png"));
     back2 += ink_pixels(out / "pieces" / (std::string(piece) + ".S.2.png"));
   }
-  for (const char* piece : {"front_l", "front_r"}) front1 += ink_pixels(out / "pieces" / (std::string(piece) + ".S.1.png"));
+  for (const char* piece : {"front_l", "front_r"})
+    front1 += ink_pixels(out / "pieces" / (std::string(piece) + ".S.1.png"));
   EXPECT_GT(back1, 50);
   EXPECT_GT(back2, 50);
   EXPECT_NE(back1, back2);  // "7" and "10" do not ink the same area
