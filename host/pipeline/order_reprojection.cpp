@@ -35,7 +35,90 @@ std::pair<double, double> from_section(const geometry::TorsoSection& s, double u
   return {u * s.half_width_mm, s.centre_z_mm + v * (v >= 0 ? s.front_mm : s.back_mm)};
 }
 
+// The superellipse parameter of a direction (us, vs) on the unit section: x = a sgn(c)|c|^(2/n).
+double section_angle(double us, double vs, double n) {
+  const double c = std::copysign(std::pow(std::abs(us), n / 2), us);
+  const double sn = std::copysign(std::pow(std::abs(vs), n / 2), vs);
+  return std::atan2(sn, c);
+}
+
+std::pair<double, double> section_at(const geometry::TorsoSection& s, double th) {
+  const double c = std::cos(th), sn = std::sin(th);
+  return {s.half_width_mm * std::copysign(std::pow(std::abs(c), 2 / s.exponent), c),
+          s.centre_z_mm + (sn >= 0 ? s.front_mm : s.back_mm) * std::copysign(std::pow(std::abs(sn), 2 / s.exponent), sn)};
+}
+
+constexpr double kArcStep = 2 * 3.14159265358979323846 / 2048;
+
+// Signed arc length along section `s` from parameter t0 to t1 (t1 < t0: negative).
+double arc_length(const geometry::TorsoSection& s, double t0, double t1) {
+  const int steps = std::max(1, static_cast<int>(std::ceil(std::abs(t1 - t0) / kArcStep)));
+  double len = 0;
+  auto prev = section_at(s, t0);
+  for (int i = 1; i <= steps; ++i) {
+    const auto p = section_at(s, t0 + (t1 - t0) * i / steps);
+    len += std::hypot(p.first - prev.first, p.second - prev.second);
+    prev = p;
+  }
+  return t1 >= t0 ? len : -len;
+}
+
+// The parameter reached from t0 by walking `length` mm along section `s` (negative: backwards).
+double walk_arc(const geometry::TorsoSection& s, double t0, double length) {
+  const double dir = length >= 0 ? 1 : -1;
+  double walked = 0, t = t0;
+  auto prev = section_at(s, t);
+  for (int i = 0; i < 4096; ++i) {
+    const double tn = t + dir * kArcStep;
+    const auto p = section_at(s, tn);
+    const double step = std::hypot(p.first - prev.first, p.second - prev.second);
+    if (walked + step >= std::abs(length)) return t + dir * kArcStep * (step > 0 ? (std::abs(length) - walked) / step : 0);
+    walked += step;
+    t = tn;
+    prev = p;
+  }
+  return t;
+}
+
 }  // namespace
+
+std::vector<Vec3> SizeMapping::map_stroke(const std::vector<Vec3>& pts) const {
+  if (graded_ || pts.empty()) {
+    std::vector<Vec3> out;
+    for (const Vec3& p : pts) out.push_back(map_point(p));
+    return out;
+  }
+  const Vec3& a = pts[pts.size() / 2];
+  const Vec3 a_mapped = map_point(a);
+  std::vector<Vec3> out;
+  for (const Vec3& p : pts) {
+    const geometry::TorsoSection sb = geometry::dress_form_section(base_, p.y);
+    const double y = a_mapped.y + (p.y - a.y);
+    const geometry::TorsoSection st = geometry::dress_form_section(target_, y);
+    const SectionPoint q = to_section(sb, p.x, p.z);
+    const SectionPoint qa = to_section(sb, a.x, a.z);
+    if (q.rho < 1e-9 || qa.rho < 1e-9) {
+      out.push_back(map_point(p));
+      continue;
+    }
+    // Around the body: the same arc length from the anchor's direction on both sections.
+    const double ta = section_angle(qa.u / qa.rho, qa.v / qa.rho, sb.exponent);
+    const double tp = section_angle(q.u / q.rho, q.v / q.rho, sb.exponent);
+    double d = tp - ta;
+    if (d > 3.14159265358979323846) d -= 2 * 3.14159265358979323846;
+    if (d < -3.14159265358979323846) d += 2 * 3.14159265358979323846;
+    const double along = arc_length(sb, ta, ta + d);
+    // The anchor's direction on the target section, as map_point finds it.
+    const double us = qa.u / qa.rho, vs = qa.v / qa.rho;
+    const double rt = std::pow(std::pow(std::abs(us), st.exponent) + std::pow(std::abs(vs), st.exponent), 1 / st.exponent);
+    const double tt = walk_arc(st, section_angle(us / rt, vs / rt, st.exponent), along);
+    // Off the body: the point's offset from its base surface point, kept in mm.
+    const auto [bx, bz] = section_at(sb, tp);
+    const auto [tx, tz] = section_at(st, tt);
+    out.push_back({tx + (p.x - bx), y, tz + (p.z - bz)});
+  }
+  return out;
+}
 
 SizeMapping::SizeMapping(const geometry::BodyMeasurements& base, const geometry::BodyMeasurements& target, bool graded)
     : base_(base),
@@ -116,7 +199,10 @@ std::vector<DesignLayerSpec> reproject_layers(const std::vector<DesignLayerSpec>
     } else if (l.type == "stroke") {
       double s = 1.0;
       if (map.graded() && !l.points_mm.empty()) s = map.girth_ratio(l.points_mm.front()[1]);
-      for (auto& p : l.points_mm) p = arr(map.map_point(v3(p)));
+      std::vector<Vec3> pts;
+      for (const auto& p : l.points_mm) pts.push_back(v3(p));
+      pts = map.map_stroke(pts);
+      for (size_t k = 0; k < pts.size(); ++k) l.points_mm[k] = arr(pts[k]);
       l.radius_mm *= s;
     }
   }

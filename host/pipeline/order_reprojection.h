@@ -22,6 +22,10 @@ class SizeMapping {
 
   [[nodiscard]] double map_height_mm(double y_mm) const;
   [[nodiscard]] geometry::Vec3 map_point(const geometry::Vec3& p_mm) const;
+  /// A stroke's points: its middle point through map_point, the others at the same distances
+  /// from it along the body (arc length around the torso section, height in mm) in "body"
+  /// placement, so the stroke keeps its length and shape; through map_point in "graded".
+  [[nodiscard]] std::vector<geometry::Vec3> map_stroke(const std::vector<geometry::Vec3>& points_mm) const;
   /// Girth of the target's torso section over the base's at base height `y_mm` (grading factor).
   [[nodiscard]] double girth_ratio(double y_mm) const;
   bool graded() const { return graded_; }

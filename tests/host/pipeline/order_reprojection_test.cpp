@@ -4,6 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+
+#include "geometry/body/dress_form.h"
 #include "geometry/samples/sizes.h"
 
 namespace tp::host {
@@ -73,6 +76,39 @@ TEST(OrderReprojection, BodyPlacementKeepsSizesGradedScalesThem) {
   EXPECT_NEAR(graded[0].width_mm, 120 * s, 1e-9);
   EXPECT_GT(graded[1].radius_mm, 8);
   EXPECT_GT(graded[2].tile_width_mm, 200);
+}
+
+double polyline_mm(const std::vector<std::array<double, 3>>& pts) {
+  double len = 0;
+  for (size_t k = 1; k < pts.size(); ++k)
+    len += std::hypot(pts[k][0] - pts[k - 1][0], pts[k][1] - pts[k - 1][1], pts[k][2] - pts[k - 1][2]);
+  return len;
+}
+
+TEST(OrderReprojection, AStrokeKeepsItsLengthOnTheBodyAndStillCrossesTheSide) {
+  DesignLayerSpec stroke;
+  stroke.type = "stroke";
+  // Around the left side at the waist, on the surface of M (1 mm out).
+  const SizeMapping m_to_m(size("M"), size("M"), false);
+  const double y = m_to_m.base_landmarks().waist_y + 50;
+  const geometry::TorsoSection sec = geometry::dress_form_section(size("M"), y);
+  for (double t = -0.6; t <= 0.61; t += 0.2) {
+    const double x = sec.half_width_mm * std::cos(t) + 1, z = sec.centre_z_mm + 0.9 * sec.front_mm * std::sin(t);
+    stroke.points_mm.push_back({x, y + 40 * t, z});
+  }
+  const double base_len = polyline_mm(stroke.points_mm);
+  for (const char* target : {"S", "L"}) {
+    const SizeMapping map(size("M"), size(target), false);
+    const auto out = reproject_layers({stroke}, map)[0].points_mm;
+    EXPECT_NEAR(polyline_mm(out) / base_len, 1.0, 0.02) << target;
+    // Front half stays in front, back half behind, the middle on the side of the target's section.
+    EXPECT_GT(out.back()[2], out.front()[2]);
+    const geometry::TorsoSection ts = geometry::dress_form_section(size(target), out[out.size() / 2][1]);
+    EXPECT_NEAR(out[out.size() / 2][0], ts.half_width_mm + 1, 2.0) << target;
+  }
+  // Graded, the stroke grows with the body.
+  const auto graded = reproject_layers({stroke}, SizeMapping(size("M"), size("L"), true))[0].points_mm;
+  EXPECT_GT(polyline_mm(graded), base_len * 1.03);
 }
 
 }  // namespace
