@@ -44,8 +44,9 @@ double section_angle(double us, double vs, double n) {
 
 std::pair<double, double> section_at(const geometry::TorsoSection& s, double th) {
   const double c = std::cos(th), sn = std::sin(th);
-  return {s.half_width_mm * std::copysign(std::pow(std::abs(c), 2 / s.exponent), c),
-          s.centre_z_mm + (sn >= 0 ? s.front_mm : s.back_mm) * std::copysign(std::pow(std::abs(sn), 2 / s.exponent), sn)};
+  return {
+      s.half_width_mm * std::copysign(std::pow(std::abs(c), 2 / s.exponent), c),
+      s.centre_z_mm + (sn >= 0 ? s.front_mm : s.back_mm) * std::copysign(std::pow(std::abs(sn), 2 / s.exponent), sn)};
 }
 
 constexpr double kArcStep = 2 * 3.14159265358979323846 / 2048;
@@ -72,7 +73,8 @@ double walk_arc(const geometry::TorsoSection& s, double t0, double length) {
     const double tn = t + dir * kArcStep;
     const auto p = section_at(s, tn);
     const double step = std::hypot(p.first - prev.first, p.second - prev.second);
-    if (walked + step >= std::abs(length)) return t + dir * kArcStep * (step > 0 ? (std::abs(length) - walked) / step : 0);
+    if (walked + step >= std::abs(length))
+      return t + dir * kArcStep * (step > 0 ? (std::abs(length) - walked) / step : 0);
     walked += step;
     t = tn;
     prev = p;
@@ -110,7 +112,8 @@ std::vector<Vec3> SizeMapping::map_stroke(const std::vector<Vec3>& pts) const {
     const double along = arc_length(sb, ta, ta + d);
     // The anchor's direction on the target section, as map_point finds it.
     const double us = qa.u / qa.rho, vs = qa.v / qa.rho;
-    const double rt = std::pow(std::pow(std::abs(us), st.exponent) + std::pow(std::abs(vs), st.exponent), 1 / st.exponent);
+    const double rt =
+        std::pow(std::pow(std::abs(us), st.exponent) + std::pow(std::abs(vs), st.exponent), 1 / st.exponent);
     const double tt = walk_arc(st, section_angle(us / rt, vs / rt, st.exponent), along);
     // Off the body: the point's offset from its base surface point, kept in mm.
     const auto [bx, bz] = section_at(sb, tp);
