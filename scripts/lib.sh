@@ -25,6 +25,7 @@ TP_PACKAGES=(
   firefox-esr  # the operator console's check in Firefox (driven over Marionette; docs/console.md)
   argyll  # printctl calibrate: targen, colprof, profcheck (docs/colour.md)
   libcpp-httplib-dev libssl-dev openssl  # printd's HTTP API (TLS via OpenSSL); the tests make a cert
+  libfreetype-dev libharfbuzz-dev fonts-dejavu-core  # text design layers (FreeType, HarfBuzz, DejaVu)
   systemd dpkg-dev wrk  # systemd-analyze verify and dpkg-shlibdeps for the .deb test; HTTP load figures
 )
 

@@ -85,6 +85,36 @@ struct DesignLayerSpec {
   std::optional<std::filesystem::path> mesh;          ///< texture transfer: textured OBJ
   double mesh_scale_to_mm = 1.0;                      ///< texture transfer: the OBJ's units
   double max_distance_mm = 30;                        ///< texture transfer: farther garment points stay unprinted
+  // Text layers (placed like a planar layer: centre, normal, up; colour_rgba is the fill).
+  std::string text;                           ///< "{name} {number}": fields of the order's copy
+  std::optional<std::filesystem::path> font;  ///< font file; DejaVu Sans Bold if absent
+  double text_size_mm = 40;                   ///< height of a capital letter
+  double outline_mm = 0;
+  std::array<int, 4> outline_rgba{255, 255, 255, 255};
+};
+
+/// One size of an order (docs/orders.md).
+struct OrderSizeSpec {
+  std::string size;  ///< size-chart name or measurement text ("L:hips=1120")
+  int quantity = 1;
+  std::optional<std::filesystem::path> pattern;               ///< imported patterns: this size's pattern file
+  std::vector<std::pair<std::string, double>> dress_form_mm;  ///< imported patterns: this size's body
+};
+
+/// A production order: the job's garment in several sizes and copies, its design made on the
+/// base size and re-projected onto the others.
+struct OrderSpec {
+  std::string base_size;           ///< the size the design's 3D coordinates are on
+  std::string placement = "body";  ///< "body" (kept on the body, in mm) or "graded"
+  std::vector<OrderSizeSpec> sizes;
+  /// Per copy (sizes in order, each `quantity` times): field name -> text, for text layers.
+  std::vector<std::vector<std::pair<std::string, std::string>>> copies;
+  std::optional<std::filesystem::path> copies_csv;  ///< where `copies` came from, if a CSV asset
+  int garments() const {
+    int n = 0;
+    for (const auto& s : sizes) n += s.quantity;
+    return n;
+  }
 };
 
 /// Per-edge allowance override.
@@ -151,6 +181,7 @@ struct Job {
   FinishingSpec finishing;
   MarkerSpec marker;
   PrintSpec print;
+  std::optional<OrderSpec> order;  ///< absent: one garment in garment.size
 };
 
 }  // namespace tp::host

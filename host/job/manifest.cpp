@@ -9,6 +9,7 @@
 #include "geometry/sewing/cloth_material.h"
 #include "host/job/design_limits.h"
 #include "host/job/internal/field_reader.h"
+#include "host/job/internal/order_manifest.h"
 
 namespace tp::host {
 
@@ -16,13 +17,7 @@ namespace fs = std::filesystem;
 using internal::FieldReader;
 using internal::Problems;
 
-namespace {
-
-constexpr double kMaxLengthMm = 100000.0;  // 100 m: longer than any marker or garment
-// Nesting budgets in separator iterations: the default of `marker.reproducible`, and the most a
-// job may ask for.
-constexpr int kDefaultNestIterations = 20000;
-constexpr int kMaxNestIterations = 10'000'000;
+namespace internal {
 
 // Resolves an asset field into `out` (reporting unsafe or missing files as problems).
 void read_asset(FieldReader& r, const std::string& key, bool required, const JobPackage* pkg,
@@ -43,6 +38,18 @@ void read_asset(FieldReader& r, const std::string& key, bool required, const Job
   }
   out = *resolved;
 }
+
+}  // namespace internal
+
+using internal::read_asset;
+
+namespace {
+
+constexpr double kMaxLengthMm = 100000.0;  // 100 m: longer than any marker or garment
+// Nesting budgets in separator iterations: the default of `marker.reproducible`, and the most a
+// job may ask for.
+constexpr int kDefaultNestIterations = 20000;
+constexpr int kMaxNestIterations = 10'000'000;
 
 // garment.material: a preset name, or {"preset": name, <field>: value, ...} overriding its values.
 void read_material(FieldReader& g, GarmentMaterialSpec& spec) {
@@ -116,8 +123,19 @@ void read_garment(FieldReader g, const JobPackage* pkg, GarmentSpec& spec) {
   }
 }
 
+// An RGBA colour: four numbers 0..255.
+void read_colour(FieldReader& l, const std::string& key, std::array<int, 4>& out) {
+  if (auto v = l.vector<4>(key, false, false)) {
+    for (int i = 0; i < 4; ++i) {
+      if ((*v)[i] < 0 || (*v)[i] > 255)
+        l.problems().add(l.pointer_of(key) + "/" + std::to_string(i), "channel outside 0..255");
+      out[i] = static_cast<int>((*v)[i]);
+    }
+  }
+}
+
 void read_layer(FieldReader l, const JobPackage* pkg, DesignLayerSpec& s) {
-  auto type = l.choice("type", true, {"planar", "cylindrical", "stroke", "texture"});
+  auto type = l.choice("type", true, {"planar", "cylindrical", "stroke", "texture", "text"});
   if (!type) return;
   s.type = *type;
   if (auto v = l.string("name", false)) s.name = *v;
@@ -163,13 +181,23 @@ void read_layer(FieldReader l, const JobPackage* pkg, DesignLayerSpec& s) {
     known.insert({"points", "radius", "colour", "hardness"});
     if (auto v = l.length_mm("radius", true, 0.1, 1000)) s.radius_mm = *v;
     if (auto v = l.number("hardness", false, 0, 1)) s.hardness = *v;
-    if (auto v = l.vector<4>("colour", false, false)) {
-      for (int i = 0; i < 4; ++i) {
-        if ((*v)[i] < 0 || (*v)[i] > 255) l.problems().add(l.pointer_of("colour") + "/" + std::to_string(i), "channel outside 0..255");
-        s.colour_rgba[i] = static_cast<int>((*v)[i]);
-      }
-    }
+    read_colour(l, "colour", s.colour_rgba);
     if (auto pts = l.vector_list<3>("points", true, true, 1)) s.points_mm = *pts;
+  } else if (s.type == "text") {
+    // docs/orders.md: a line of text placed like a planar layer, "{field}" filled per copy.
+    known.insert({"text", "font", "size", "colour", "outline", "outline_colour", "centre", "normal", "up"});
+    if (auto v = l.string("text", true)) {
+      if (v->empty() || v->size() > 200) l.problems().add(l.pointer_of("text"), "text must be 1-200 characters");
+      s.text = *v;
+    }
+    read_asset(l, "font", false, pkg, s.font);
+    if (auto v = l.length_mm("size", true, 1, 2000)) s.text_size_mm = *v;
+    if (auto v = l.length_mm("outline", false, 0, 200)) s.outline_mm = *v;
+    read_colour(l, "colour", s.colour_rgba);
+    read_colour(l, "outline_colour", s.outline_rgba);
+    if (auto v = l.vector<3>("centre", true, true)) s.centre_mm = *v;
+    if (auto v = l.vector<3>("normal", false, false)) s.normal = *v;
+    if (auto v = l.vector<3>("up", false, false)) s.up = *v;
   } else if (s.type == "texture") {
     known.insert({"mesh", "image", "units", "max_distance"});
     read_asset(l, "mesh", true, pkg, s.mesh);
@@ -276,7 +304,7 @@ Result<Job> parse_job(const std::string& text, const JobPackage* pkg) {
   Problems problems("job.json");
   if (!doc.is_object()) return fail(ErrorCode::kValidation, "job.json: /: expected a JSON object");
   FieldReader top(doc, "", problems);
-  top.reject_unknown({"format", "name", "garment", "design", "finishing", "marker", "print"});
+  top.reject_unknown({"format", "name", "garment", "design", "finishing", "marker", "print", "order"});
 
   Job job;
   if (auto fmt = top.string("format", true); fmt && *fmt != kJobFormat)
@@ -301,6 +329,8 @@ Result<Job> parse_job(const std::string& text, const JobPackage* pkg) {
   if (auto f = top.object("finishing", false)) read_finishing(*f, job.finishing);
   if (auto m = top.object("marker", true)) read_marker(*m, job.marker);
   if (auto p = top.object("print", false)) read_print(*p, pkg, job.print);
+  if (auto o = top.object("order", false)) internal::read_order(*o, pkg, job);
+  internal::check_text_layers(job, problems);
 
   if (!problems.empty()) {
     bool unsafe = false;

@@ -9,6 +9,8 @@
 
 #include "host/common/atomic_file.h"
 #include "host/common/text.h"
+#include "host/pipeline/internal/order_run.h"
+#include "host/pipeline/internal/peak_rss.h"
 #include "host/pipeline/internal/pipeline_state.h"
 #include "host/pipeline/internal/stage_tracker.h"
 
@@ -91,20 +93,35 @@ Status run_job(const Job& job, const RunOptions& options, const geometry::Cancel
       {Stage::kMesh, internal::stage_mesh},     {Stage::kGarment, internal::stage_garment},
       {Stage::kDesign, internal::stage_design}, {Stage::kMarker, internal::stage_marker},
       {Stage::kPrint, internal::stage_print},   {Stage::kOutputs, internal::stage_outputs}};
+  // An order (docs/orders.md) drafts, sews and designs every size and copy, then goes on as one job.
+  const std::pair<Stage, StageFn> order_stages[] = {
+      {Stage::kIntake, internal::stage_intake},       {Stage::kPattern, internal::stage_order_pattern},
+      {Stage::kMesh, internal::stage_order_mesh},     {Stage::kGarment, internal::stage_order_garment},
+      {Stage::kDesign, internal::stage_order_design}, {Stage::kMarker, internal::stage_marker},
+      {Stage::kPrint, internal::stage_print},         {Stage::kOutputs, internal::stage_outputs}};
   Status result = {};
   if (!options.plan_dir.empty()) {
     auto plan = internal::PlanStore::open(options.plan_dir);
     if (plan) ps.plan = std::move(*plan);
     else result = fail(plan.error().with_context("plan"));
   }
-  for (const auto& [stage, fn] : stages) {
+  for (const auto& [stage, fn] : job.order ? order_stages : stages) {
     if (!result) break;
+    // The RIP's memory: the resident peak while the print stage runs, against what the job held before.
+    const std::optional<double> rss_before = stage == Stage::kPrint ? internal::resident_mib() : std::nullopt;
+    const bool peak_reset = rss_before && internal::reset_peak_resident();
     result = tracker.run(stage, [&] {
       ps.stage_reused = false;
       return fn(ps);
     }, &ps.stage_reused);
+    if (peak_reset && report.contains("rip") && report["rip"].is_object())
+      if (auto peak = internal::peak_resident_mib())
+        report["rip"]["memory"] = {{"rss_before_mib", *rss_before},
+                                   {"peak_rss_mib", *peak},
+                                   {"peak_above_before_mib", std::max(0.0, *peak - *rss_before)}};
   }
 
+  internal::finish_order_report(report);
   report["finished"] = utc_now();
   report["wall_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   report["state"] = result ? "done" : result.error().code == ErrorCode::kCancelled ? "cancelled" : "failed";

@@ -4,6 +4,7 @@
 #include <mutex>
 
 #include "geometry/design/make_piece_renderer.h"
+#include "geometry/design/text_layer.h"
 #include "geometry/design/texture_model.h"
 #include "geometry/design/textures.h"
 #include "host/pipeline/internal/pipeline_state.h"
@@ -17,6 +18,10 @@ namespace {
 constexpr std::size_t kProceduralKept = 4;
 
 geometry::Vec3 vec3(const std::array<double, 3>& a) { return {a[0], a[1], a[2]}; }
+geometry::Rgba8 rgba(const std::array<int, 4>& c) {
+  return {static_cast<std::uint8_t>(c[0]), static_cast<std::uint8_t>(c[1]), static_cast<std::uint8_t>(c[2]),
+          static_cast<std::uint8_t>(c[3])};
+}
 
 // A procedural texture, generated once per process for the same parameters: the studio renders
 // a design again after every change, and a 2048 px tile takes longer than the rest of a preview.
@@ -108,6 +113,26 @@ Result<geometry::Design> build_design(const Job& job) {
                   static_cast<std::uint8_t>(s.colour_rgba[2]), static_cast<std::uint8_t>(s.colour_rgba[3])};
       b.hardness = s.hardness;
       layer.content = std::move(b);
+    } else if (s.type == "text") {
+      // A line of text (an order copy's fields already filled in) rendered and placed like a planar layer.
+      geometry::TextStyle ts;
+      if (s.font) ts.font_file = *s.font;
+      ts.cap_height_mm = s.text_size_mm;
+      ts.colour = rgba(s.colour_rgba);
+      ts.outline_mm = s.outline_mm;
+      ts.outline_colour = rgba(s.outline_rgba);
+      auto t = geometry::render_text_image(s.text, ts);
+      if (!t)
+        return fail(ErrorCode::kValidation,
+                    "job.json: /design/layers/" + std::to_string(i) + "/text: " + t.error().message);
+      geometry::PlanarProjection p;
+      p.image = std::make_shared<const geometry::ImageRgba8>(std::move(t->image));
+      p.centre_mm = vec3(s.centre_mm);
+      p.normal = geometry::normalized(vec3(s.normal));
+      p.up = geometry::normalized(vec3(s.up));
+      p.width_mm = t->width_mm;
+      p.height_mm = t->height_mm;
+      layer.content = std::move(p);
     } else if (s.type == "texture" && s.mesh) {
       const std::string where = "job.json: /design/layers/" + std::to_string(i);
       auto model = geometry::load_texture_model(*s.mesh, s.mesh_scale_to_mm);

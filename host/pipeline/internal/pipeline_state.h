@@ -54,6 +54,7 @@ struct PipelineState {
   std::string garment_digest;                     ///< hash of the garment as used (plan file text)
   std::string marker_digest;                      ///< hash of the markers as used (plan file text)
   bool stage_reused = false;                      ///< set by a stage that loaded its result from the plan
+  std::shared_ptr<struct OrderRun> order;         ///< an order job's sizes and copies (order_run.h)
 };
 
 // One function per stage (stage_<name>.cpp), each filling PipelineState and the report.

@@ -35,7 +35,8 @@ TEST_P(DemoReport, PrintedOnTheSimulatorItMatchesTheSchema) {
 
 // shirt-front-flat is OutputReaders' job (output_readers_test.cpp).
 INSTANTIATE_TEST_SUITE_P(Examples, DemoReport,
-                         ::testing::Values("skirt-marbling", "dress-projection", "blouse-projection", "top-strokes"),
+                         ::testing::Values("skirt-marbling", "dress-projection", "blouse-projection", "top-strokes",
+                                           "order-team-kit"),
                          [](const auto& info) {
                            std::string n = info.param;
                            for (char& c : n)
