@@ -35,6 +35,11 @@ struct ClothModel {
   std::vector<std::array<int, 2>> edges;      ///< unique undirected edges (self-collision)
   std::vector<int> vertex_piece;              ///< #V piece of the vertex's first chart
   double mean_edge_mm = 0;
+  /// Sewing only (empty when draping a sewn garment): vertex pairs a stitch draws together,
+  /// and per vertex its weld group (the lowest vertex stitched to it, transitively; itself if
+  /// none). Self-collision treats vertices of one group as one vertex, so seam sides can meet.
+  std::vector<std::array<int, 2>> stitches;
+  std::vector<int> weld_group;
 };
 
 /// Builds the model of `g` (its 3D positions and its charts' rest shapes). Triangles a seam

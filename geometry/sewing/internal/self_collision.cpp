@@ -100,6 +100,8 @@ void for_cells(const SpatialHash& h, Vec3 lo, Vec3 hi, Fn&& fn) {
 
 SelfCollisionPairs find_self_collision_pairs(const ClothModel& cloth, const std::vector<Vec3>& x, double margin_mm) {
   SelfCollisionPairs out;
+  // Vertices of one weld group count as one (seam sides being sewn may meet).
+  auto group = [&](int v) { return cloth.weld_group.empty() ? v : cloth.weld_group[v]; };
   const double cell = std::max(cloth.mean_edge_mm, 2 * margin_mm);
   const Vec3 pad{margin_mm, margin_mm, margin_mm};
 
@@ -124,7 +126,8 @@ SelfCollisionPairs find_self_collision_pairs(const ClothModel& cloth, const std:
     const Vec3 n = triangle_normal(x, t);
     const Vec3 plo = lo - pad, phi = hi + pad;
     for (int v : found) {
-      if (v == t.v[0] || v == t.v[1] || v == t.v[2]) continue;
+      const int gv = group(v);
+      if (gv == group(t.v[0]) || gv == group(t.v[1]) || gv == group(t.v[2])) continue;
       const Vec3 q0 = x[v];
       if (q0.x < plo.x || q0.y < plo.y || q0.z < plo.z || q0.x > phi.x || q0.y > phi.y || q0.z > phi.z) continue;
       const auto w = closest_on_triangle(x[v], a, b, c);
@@ -164,7 +167,8 @@ SelfCollisionPairs find_self_collision_pairs(const ClothModel& cloth, const std:
     });
     for (int o : found) {
       const auto& eb = cloth.edges[o];
-      if (ea[0] == eb[0] || ea[0] == eb[1] || ea[1] == eb[0] || ea[1] == eb[1]) continue;
+      const int a0 = group(ea[0]), a1 = group(ea[1]), b0 = group(eb[0]), b1 = group(eb[1]);
+      if (a0 == b0 || a0 == b1 || a1 == b0 || a1 == b1) continue;
       Vec3 olo, ohi;
       edge_box(eb, olo, ohi);
       if (olo.x > hi.x || olo.y > hi.y || olo.z > hi.z || ohi.x < lo.x || ohi.y < lo.y || ohi.z < lo.z) continue;

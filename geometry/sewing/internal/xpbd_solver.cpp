@@ -113,6 +113,15 @@ Result<XpbdStats> run_xpbd(ClothModel& cloth, const BodySdf& body, const XpbdPar
   std::vector<Vec3> normal(n);
   std::vector<double> depth(n);
   SelfCollisionPairs pairs;
+  // Sewing: every stitched pair's allowed distance shrinks from its start at a fixed speed.
+  const bool sewing = !cloth.stitches.empty();
+  std::vector<double> stitch_start(cloth.stitches.size());
+  double widest = 0;
+  for (size_t k = 0; k < cloth.stitches.size(); ++k) {
+    stitch_start[k] = norm(x[cloth.stitches[k][0]] - x[cloth.stitches[k][1]]);
+    widest = std::max(widest, stitch_start[k]);
+  }
+  const double close_s = p.stitch_close_mm_s > 0 ? widest / p.stitch_close_mm_s : 0;
 
   for (int step = 0; step < total; ++step) {
     if (cancel && cancel->cancelled()) return fail(ErrorCode::kCancelled, "draping cancelled");
@@ -136,6 +145,20 @@ Result<XpbdStats> run_xpbd(ClothModel& cloth, const BodySdf& body, const XpbdPar
     for (int pass = 0; pass < p.stretch_passes; ++pass)
       for (const RestTriangle& t : cloth.triangles) project_triangle(t, cloth.inv_mass, p.stretch_limit, p.stretch_stiffness, x);
     for (const BendStencil& s : cloth.bends) project_bend(s, cloth.inv_mass, dt2, x);
+    if (sewing) {
+      const double closed_mm = p.stitch_close_mm_s > 0 ? p.stitch_close_mm_s * (step + 1) * dt : 1e300;
+      for (size_t k = 0; k < cloth.stitches.size(); ++k) {
+        const int i = cloth.stitches[k][0], j = cloth.stitches[k][1];
+        const double allowed = std::max(stitch_start[k] - closed_mm, 0.0);
+        const Vec3 d = x[i] - x[j];
+        const double len = norm(d);
+        const double wsum = cloth.inv_mass[i] + cloth.inv_mass[j];
+        if (len <= allowed || wsum <= 0 || len < 1e-12) continue;
+        const Vec3 corr = d * ((len - allowed) / (len * wsum));
+        x[i] -= corr * cloth.inv_mass[i];
+        x[j] += corr * cloth.inv_mass[j];
+      }
+    }
     // No vertex travels further than twice the budget in a substep: pairs cannot tunnel.
     for (int i = 0; i < n; ++i) {
       const Vec3 d = x[i] - prev[i];
@@ -185,6 +208,15 @@ Result<XpbdStats> run_xpbd(ClothModel& cloth, const BodySdf& body, const XpbdPar
     st.substeps = step + 1;
     st.simulated_s = st.substeps * dt;
     if (!std::isfinite(st.max_speed_mm_s)) return fail(ErrorCode::kSewing, "cloth drape diverged");
+    if (sewing) {
+      // Sewn: the seams closed (checked once the widest has had the time to close).
+      if (st.simulated_s < close_s) continue;
+      double gap = 0;
+      for (const auto& pr : cloth.stitches) gap = std::max(gap, norm(x[pr[0]] - x[pr[1]]));
+      st.stitch_gap_max_mm = gap;
+      if (gap < p.stitch_done_mm) break;
+      continue;
+    }
     // Settled: all but 0.5 % of the vertices slower than the settle speed.
     if (st.simulated_s >= 0.3 && moving <= n / 200) break;
   }
