@@ -122,13 +122,14 @@ Result<XpbdStats> run_xpbd(ClothModel& cloth, const BodySdf& body, const XpbdPar
     widest = std::max(widest, stitch_start[k]);
   }
   const double close_s = p.stitch_close_mm_s > 0 ? widest / p.stitch_close_mm_s : 0;
+  double best_gap = 1e300, best_at_s = 0;
 
   for (int step = 0; step < total; ++step) {
     if (cancel && cancel->cancelled()) return fail(ErrorCode::kCancelled, "draping cancelled");
     if (step % broad_every == 0) {
       if (p.on_progress) p.on_progress(static_cast<double>(step) / total);
       budget = std::clamp(1.5 * last_move + 0.05, 0.05, p.max_move_mm);
-      pairs = find_self_collision_pairs(cloth, x, p.self_thickness_mm + 2 * broad_every * 2 * budget);
+      pairs = find_self_collision_pairs(cloth, x, p.self_thickness_mm + 2 * broad_every * 2 * budget, p.threads);
       st.self_pairs = static_cast<int>(pairs.point_triangle.size() + pairs.edge_edge.size());
     }
     // Predict: gravity and damping on the velocities, positions advanced.
@@ -215,6 +216,9 @@ Result<XpbdStats> run_xpbd(ClothModel& cloth, const BodySdf& body, const XpbdPar
       for (const auto& pr : cloth.stitches) gap = std::max(gap, norm(x[pr[0]] - x[pr[1]]));
       st.stitch_gap_max_mm = gap;
       if (gap < p.stitch_done_mm) break;
+      // Stalled: the widest gap has not narrowed by 1 % for the stall time (a seam held open).
+      if (gap < 0.99 * best_gap) best_gap = gap, best_at_s = st.simulated_s;
+      if (st.simulated_s - best_at_s > p.stitch_stall_s) break;
       continue;
     }
     // Settled: all but 0.5 % of the vertices slower than the settle speed.

@@ -34,7 +34,9 @@ struct XpbdParams {
   /// Sewing stops once every stitched pair is closer than this (and the cloth has had the time
   /// to close its widest gap); the settle test is not used.
   double stitch_done_mm = 1;
-  int threads = 2;                   ///< body queries only; results do not depend on it
+  /// Sewing also stops once the widest gap has not narrowed by 1 % for this long (simulated s).
+  double stitch_stall_s = 0.5;
+  int threads = 2;  ///< body queries and pair search; results do not depend on it
   /// Called at each broad phase with the share of the time limit simulated (progress), may be empty.
   std::function<void(double fraction)> on_progress;
 };
