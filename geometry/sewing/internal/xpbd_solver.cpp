@@ -142,12 +142,10 @@ Result<XpbdStats> run_xpbd(ClothModel& cloth, const BodySdf& body, const XpbdPar
       if (speed * dt > budget) v[i] = v[i] * (budget / (speed * dt));
       x[i] += v[i] * dt;
     }
-    // Membrane, then bending, in their fixed order.
-    for (int pass = 0; pass < p.stretch_passes; ++pass)
-      for (const RestTriangle& t : cloth.triangles) project_triangle(t, cloth.inv_mass, p.stretch_limit, p.stretch_stiffness, x);
-    for (const BendStencil& s : cloth.bends) project_bend(s, cloth.inv_mass, dt2, x);
-    if (sewing) {
-      const double closed_mm = p.stitch_close_mm_s > 0 ? p.stitch_close_mm_s * (step + 1) * dt : 1e300;
+    // Membrane (each pass followed by the stitches, so seams are not left to the last word of
+    // the strain limit), then bending, in their fixed order.
+    const double closed_mm = p.stitch_close_mm_s > 0 ? p.stitch_close_mm_s * (step + 1) * dt : 1e300;
+    auto project_stitches = [&] {
       for (size_t k = 0; k < cloth.stitches.size(); ++k) {
         const int i = cloth.stitches[k][0], j = cloth.stitches[k][1];
         const double allowed = std::max(stitch_start[k] - closed_mm, 0.0);
@@ -159,7 +157,13 @@ Result<XpbdStats> run_xpbd(ClothModel& cloth, const BodySdf& body, const XpbdPar
         x[i] -= corr * cloth.inv_mass[i];
         x[j] += corr * cloth.inv_mass[j];
       }
+    };
+    for (int pass = 0; pass < p.stretch_passes; ++pass) {
+      for (const RestTriangle& t : cloth.triangles)
+        project_triangle(t, cloth.inv_mass, p.stretch_limit, p.stretch_stiffness, x);
+      if (sewing) project_stitches();
     }
+    for (const BendStencil& s : cloth.bends) project_bend(s, cloth.inv_mass, dt2, x);
     // No vertex travels further than twice the budget in a substep: pairs cannot tunnel.
     for (int i = 0; i < n; ++i) {
       const Vec3 d = x[i] - prev[i];
