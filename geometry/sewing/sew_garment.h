@@ -39,7 +39,7 @@ struct SewOptions {
   /// XPBD sewing: the speed at which each seam's allowed gap shrinks, the gap below which a
   /// seam counts as closed (its sides are then merged), the simulated time limit, and the
   /// distance kept between layers. No ARAP relaxation follows (the drape settles the garment).
-  double xpbd_close_mm_s = 100;
+  double xpbd_close_mm_s = 250;
   double xpbd_done_gap_mm = 1;
   double xpbd_duration_s = 8;
   double xpbd_self_thickness_mm = 2;
