@@ -171,6 +171,7 @@ Result<Garment> sew_garment(const Pattern& pattern, const PatternMesh& meshes, c
     xp.close_mm_s = options.xpbd_close_mm_s;
     xp.done_gap_mm = options.xpbd_done_gap_mm;
     xp.duration_s = options.xpbd_duration_s;
+    xp.stall_s = options.xpbd_stall_s;
     xp.clearance_mm = options.clearance_mm;
     xp.self_thickness_mm = options.xpbd_self_thickness_mm;
     xp.threads = options.threads;

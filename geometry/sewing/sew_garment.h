@@ -42,6 +42,7 @@ struct SewOptions {
   double xpbd_close_mm_s = 250;
   double xpbd_done_gap_mm = 1;
   double xpbd_duration_s = 8;
+  double xpbd_stall_s = 0.5;  ///< also stops once the widest gap has not narrowed by 1 % for this long
   double xpbd_self_thickness_mm = 2;
   int threads = 2;
   /// Progress: the share of the planned sewing and relaxing iterations done, called once per

@@ -73,6 +73,7 @@ Result<XpbdSewStats> sew_pieces_xpbd(const PatternMesh& meshes, const std::vecto
   xp.friction = 0;  // seams slide over the body while they close
   xp.stitch_close_mm_s = p.close_mm_s;
   xp.stitch_done_mm = p.done_gap_mm;
+  xp.stitch_stall_s = p.stall_s;
   xp.threads = p.threads;
   xp.on_progress = p.on_progress;
   auto r = run_xpbd(cloth, body, xp, cancel);

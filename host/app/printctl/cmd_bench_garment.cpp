@@ -272,6 +272,9 @@ void register_bench_garment(CLI::App& bench) {
       ->check(CLI::Range(1.0, 10000.0));
   cmd->add_option("--xpbd-duration", args->sew.xpbd_duration_s, "XPBD sewing: simulated time limit (s)")
       ->check(CLI::Range(0.01, 100.0));
+  cmd->add_option("--xpbd-stall", args->sew.xpbd_stall_s,
+                  "XPBD sewing: stop once the widest seam gap stalls this long (s)")
+      ->check(CLI::Range(0.01, 100.0));
   cmd->add_option("--corpus", args->corpus, "bench every pattern of this folder on its body (sidecar <stem>.body.json "
                                             "or the rules in docs/garments.md); repeatable")
       ->check(CLI::ExistingDirectory);
