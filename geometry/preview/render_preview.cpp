@@ -135,9 +135,8 @@ ImageRgba8 render_preview(const Garment& garment, const BodyMesh* body, PreviewV
     const GarmentPiece& gp = garment.pieces[pi];
     Rgba8 col = piece_colour(static_cast<int>(pi));
     Vec3 base{col.r / 255.0, col.g / 255.0, col.b / 255.0};
-    const PieceTexture* tex = o.textures && pi < o.textures->size() && !(*o.textures)[pi].image.pixels.empty()
-                                  ? &(*o.textures)[pi]
-                                  : nullptr;
+    const PieceTexture* tex =
+        o.textures && pi < o.textures->size() && !(*o.textures)[pi].image.pixels.empty() ? &(*o.textures)[pi] : nullptr;
     cv.tex = tex;
     for (const auto& t : gp.mesh.triangles) {
       Vec3 a = cam.to_view(garment.vertices_mm[gp.vertex_3d[t[0]]]);

@@ -65,8 +65,7 @@ void read_material(FieldReader& g, GarmentMaterialSpec& spec) {
 
 void read_garment(FieldReader g, const JobPackage* pkg, GarmentSpec& spec) {
   g.reject_unknown({"pattern", "pattern_format", "garment_mesh", "sample", "size", "body", "stitches", "mesh_edge",
-                    "suggest_min_score", "stitches_file", "checks", "material", "drape", "correspondence",
-                    "sewing"});
+                    "suggest_min_score", "stitches_file", "checks", "material", "drape", "correspondence", "sewing"});
   read_asset(g, "pattern", false, pkg, spec.pattern);
   if (auto v = g.choice("pattern_format", false, {"auto", "native", "garmentcode", "freesewing-svg", "dxf-aama"}))
     spec.pattern_format = *v;

@@ -67,7 +67,9 @@ Result<std::vector<std::string>> write_garment_print_previews(const std::filesys
     if (img.image.width_px <= 0 || img.image.height_px <= 0) continue;
     // The print over white fabric: the preview shows the garment as it comes off the press.
     for (geometry::Rgba8& p : img.image.pixels) {
-      const auto over = [a = p.a](std::uint8_t c) { return static_cast<std::uint8_t>((c * a + 255 * (255 - a) + 127) / 255); };
+      const auto over = [a = p.a](std::uint8_t c) {
+        return static_cast<std::uint8_t>((c * a + 255 * (255 - a) + 127) / 255);
+      };
       p = {over(p.r), over(p.g), over(p.b), 255};
     }
     textures[i] = {std::move(img.image), img.pixel_to_piece_mm.inverse()};

@@ -79,7 +79,8 @@ Result<XpbdSewStats> sew_pieces_xpbd(const PatternMesh& meshes, const std::vecto
   auto r = run_xpbd(cloth, body, xp, cancel);
   if (!r) return fail(r.error().with_context("XPBD sewing"));
   x_mm = std::move(cloth.x_mm);
-  return XpbdSewStats{.substeps = r->substeps, .simulated_s = r->simulated_s, .stitch_gap_max_mm = r->stitch_gap_max_mm};
+  return XpbdSewStats{
+      .substeps = r->substeps, .simulated_s = r->simulated_s, .stitch_gap_max_mm = r->stitch_gap_max_mm};
 }
 
 }  // namespace tp::geometry::internal

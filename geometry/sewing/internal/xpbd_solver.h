@@ -49,7 +49,7 @@ struct XpbdStats {
   int body_contacts = 0;        ///< vertices touching the body in the last substep
   int self_contacts = 0;        ///< pairs held apart in the last substep
   int self_pairs = 0;           ///< candidate pairs of the last broad phase
-  double stitch_gap_max_mm = 0; ///< sewing: the widest stitched pair at the end
+  double stitch_gap_max_mm = 0;  ///< sewing: the widest stitched pair at the end
 };
 
 /// Steps `cloth` (positions updated in place, starting at rest) under `p` on `body`.

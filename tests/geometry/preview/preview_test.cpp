@@ -74,7 +74,8 @@ TEST(RenderPreview, TexturedPieceShowsItsPrintWhereItsUvsPutIt) {
   std::vector<PieceTexture> tex(1);
   tex[0].image.width_px = 200, tex[0].image.height_px = 100;
   for (int y = 0; y < 100; ++y)
-    for (int x = 0; x < 200; ++x) tex[0].image.pixels.push_back(x < 100 ? Rgba8{230, 20, 20, 255} : Rgba8{20, 20, 230, 255});
+    for (int x = 0; x < 200; ++x)
+      tex[0].image.pixels.push_back(x < 100 ? Rgba8{230, 20, 20, 255} : Rgba8{20, 20, 230, 255});
   tex[0].piece_mm_to_px = Affine2{};  // identity: pixel (x, y) is piece mm (x, y)
   PreviewOptions o{.width_px = 200, .height_px = 100, .supersample = 1, .draw_body = false, .draw_seams = false};
   o.textures = &tex;
