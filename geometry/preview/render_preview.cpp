@@ -36,6 +36,20 @@ struct Canvas {
 
   Vec3 to_px(Vec3 v) const { return {ox + v.x * scale, oy - v.y * scale, v.z}; }
 
+  Vec3 texel(Vec2 uv) const {
+    const Vec2 q = tex->piece_mm_to_px.apply(uv);
+    const int x = std::clamp(static_cast<int>(std::floor(q.x)), 0, tex->image.width_px - 1);
+    const int y = std::clamp(static_cast<int>(std::floor(q.y)), 0, tex->image.height_px - 1);
+    const Rgba8 p = tex->image.at(x, y);
+    return Vec3{p.r / 255.0, p.g / 255.0, p.b / 255.0};
+  }
+
+  // A textured triangle: uv (piece mm) interpolated per pixel (orthographic: affine is exact),
+  // the texel found through tex.piece_mm_to_px, times the triangle's shading `light`.
+  const PieceTexture* tex = nullptr;
+  Vec2 uva, uvb, uvc;
+  double light = 1;
+
   void triangle(Vec3 a, Vec3 b, Vec3 c, Vec3 colour) {
     Vec3 pa = to_px(a), pb = to_px(b), pc = to_px(c);
     double area = (pb.x - pa.x) * (pc.y - pa.y) - (pb.y - pa.y) * (pc.x - pa.x);
@@ -55,16 +69,17 @@ struct Canvas {
         size_t i = static_cast<size_t>(y) * w + x;
         if (z <= depth[i]) continue;
         depth[i] = z;
-        rgb[i] = colour;
+        rgb[i] = tex ? texel(uva * w0 + uvb * w1 + uvc * w2) * light : colour;
       }
   }
 };
 
-Vec3 shade(Vec3 base, Vec3 a, Vec3 b, Vec3 c) {
+double light_of(Vec3 a, Vec3 b, Vec3 c) {
   Vec3 n = normalized(cross(b - a, c - a));
-  double lambert = std::abs(dot(n, kLightDir));
-  return base * (kAmbient + (1 - kAmbient) * lambert);
+  return kAmbient + (1 - kAmbient) * std::abs(dot(n, kLightDir));
 }
+
+Vec3 shade(Vec3 base, Vec3 a, Vec3 b, Vec3 c) { return base * light_of(a, b, c); }
 
 }  // namespace
 
@@ -120,12 +135,20 @@ ImageRgba8 render_preview(const Garment& garment, const BodyMesh* body, PreviewV
     const GarmentPiece& gp = garment.pieces[pi];
     Rgba8 col = piece_colour(static_cast<int>(pi));
     Vec3 base{col.r / 255.0, col.g / 255.0, col.b / 255.0};
+    const PieceTexture* tex =
+        o.textures && pi < o.textures->size() && !(*o.textures)[pi].image.pixels.empty() ? &(*o.textures)[pi] : nullptr;
+    cv.tex = tex;
     for (const auto& t : gp.mesh.triangles) {
       Vec3 a = cam.to_view(garment.vertices_mm[gp.vertex_3d[t[0]]]);
       Vec3 b = cam.to_view(garment.vertices_mm[gp.vertex_3d[t[1]]]);
       Vec3 c = cam.to_view(garment.vertices_mm[gp.vertex_3d[t[2]]]);
+      if (tex) {
+        cv.uva = gp.mesh.vertices_mm[t[0]], cv.uvb = gp.mesh.vertices_mm[t[1]], cv.uvc = gp.mesh.vertices_mm[t[2]];
+        cv.light = light_of(a, b, c);
+      }
       cv.triangle(a, b, c, shade(base, a, b, c));
     }
+    cv.tex = nullptr;
   }
   // Seams: piece outlines drawn as thin dark quads slightly towards the viewer.
   if (o.draw_seams) {

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "geometry/body/body_mesh.h"
 #include "geometry/common/image.h"
@@ -15,6 +16,13 @@ enum class PreviewView { kFront, kSide, kBack };
 /// Name of a view ("front", "side", "back").
 std::string to_string(PreviewView view);
 
+/// A piece's print as a texture: its image and the map from piece-local mm (the garment
+/// piece's 2D mesh coordinates) to the image's pixel coordinates.
+struct PieceTexture {
+  ImageRgba8 image;
+  Affine2 piece_mm_to_px;
+};
+
 /// Image size and content of a preview.
 struct PreviewOptions {
   int width_px = 600;
@@ -22,6 +30,9 @@ struct PreviewOptions {
   int supersample = 2;     ///< rendered at this many samples per pixel side, then averaged
   bool draw_body = true;   ///< draw the body (light grey) under the garment
   bool draw_seams = true;  ///< darken the piece outlines
+  /// When set (one per garment piece, empty images allowed), pieces wear their texture through
+  /// their 2D meshes (the UVs) instead of their piece colour.
+  const std::vector<PieceTexture>* textures = nullptr;
 };
 
 /// A distinct colour for piece `index` (golden-angle hues), as in the paper's Figure 7.

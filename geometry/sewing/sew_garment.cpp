@@ -8,6 +8,7 @@
 
 #include "geometry/garment/initial_placement.h"
 #include "geometry/sewing/internal/arap_solver.h"
+#include "geometry/sewing/internal/xpbd_sewing.h"
 
 namespace tp::geometry {
 namespace {
@@ -97,6 +98,22 @@ std::vector<Vec3> interpolate_chart(const GarmentPiece& coarse, const std::vecto
   return out;
 }
 
+// The garment of the merged cloth: every piece's chart and its vertices' merged ids.
+Garment finish_garment(const Pattern& pattern, const PatternMesh& meshes, const std::vector<int>& offset,
+                       MergedCloth& mc, SewStats& st, std::chrono::steady_clock::time_point t0) {
+  Garment g;
+  g.vertices_mm = std::move(mc.cloth.x_mm);
+  for (size_t p = 0; p < pattern.pieces.size(); ++p) {
+    GarmentPiece gp;
+    gp.piece = static_cast<int>(p);
+    gp.mesh = meshes.pieces[p];
+    for (int v = offset[p]; v < offset[p + 1]; ++v) gp.vertex_3d.push_back(mc.merged_id[v]);
+    g.pieces.push_back(std::move(gp));
+  }
+  st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return g;
+}
+
 }  // namespace
 
 Result<Garment> sew_garment(const Pattern& pattern, const PatternMesh& meshes, const BodySdf& body,
@@ -147,6 +164,21 @@ Result<Garment> sew_garment(const Pattern& pattern, const PatternMesh& meshes, c
       auto pos = interpolate_chart(coarse->pieces[p], coarse->vertices_mm, meshes.pieces[p]);
       cloth.x_mm.insert(cloth.x_mm.end(), pos.begin(), pos.end());
     }
+  } else if (options.solver == SewSolver::kXpbd) {
+    auto start = initial_placement(pattern, meshes, body);
+    for (auto& piece_start : start) cloth.x_mm.insert(cloth.x_mm.end(), piece_start.begin(), piece_start.end());
+    internal::XpbdSewParams xp;
+    xp.close_mm_s = options.xpbd_close_mm_s;
+    xp.done_gap_mm = options.xpbd_done_gap_mm;
+    xp.duration_s = options.xpbd_duration_s;
+    xp.stall_s = options.xpbd_stall_s;
+    xp.clearance_mm = options.clearance_mm;
+    xp.self_thickness_mm = options.xpbd_self_thickness_mm;
+    xp.threads = options.threads;
+    if (options.on_progress) xp.on_progress = options.on_progress;
+    auto r = internal::sew_pieces_xpbd(meshes, offset, cloth.springs, body, xp, cloth.x_mm, cancel);
+    if (!r) return fail(r.error().with_context("pattern '" + pattern.name + "': sewing"));
+    st.sewing_iterations = r->substeps;
   } else {
     auto start = initial_placement(pattern, meshes, body);
     for (auto& piece_start : start) cloth.x_mm.insert(cloth.x_mm.end(), piece_start.begin(), piece_start.end());
@@ -201,7 +233,9 @@ Result<Garment> sew_garment(const Pattern& pattern, const PatternMesh& meshes, c
     }
   }
 
-  // Phase B: relax the sewn garment under gravity until it settles.
+  // Phase B: relax the sewn garment under gravity until it settles (ARAP sewing only: the
+  // XPBD-sewn garment goes to the drape as sewn, untangled).
+  if (options.solver == SewSolver::kXpbd) return finish_garment(pattern, meshes, offset, mc, st, t0);
   params.spring_weight = 0;
   params.edge_weight = options.seam_edge_weight;
   params.gravity_per_mm = options.gravity_per_mm;
@@ -218,18 +252,7 @@ Result<Garment> sew_garment(const Pattern& pattern, const PatternMesh& meshes, c
   st.relax_iterations += r->iterations;
   st.last_move_mm = r->last_move_mm;
   st.contacts = r->contacts;
-
-  Garment g;
-  g.vertices_mm = std::move(merged.x_mm);
-  for (size_t p = 0; p < pattern.pieces.size(); ++p) {
-    GarmentPiece gp;
-    gp.piece = static_cast<int>(p);
-    gp.mesh = meshes.pieces[p];
-    for (int v = offset[p]; v < offset[p + 1]; ++v) gp.vertex_3d.push_back(mc.merged_id[v]);
-    g.pieces.push_back(std::move(gp));
-  }
-  st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  return g;
+  return finish_garment(pattern, meshes, offset, mc, st, t0);
 }
 
 }  // namespace tp::geometry

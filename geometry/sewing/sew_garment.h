@@ -13,8 +13,14 @@
 
 namespace tp::geometry {
 
+/// How the seams are closed: ARAP springs (no self-collision), or the XPBD cloth solver with
+/// self-collision from the first step (the drape's solver), whose layers cannot pass through
+/// each other.
+enum class SewSolver { kArap, kXpbd };
+
 /// Controls of sewing and relaxation.
 struct SewOptions {
+  SewSolver solver = SewSolver::kArap;
   double target_edge_mm = 20;        ///< meshing size bound (see mesh_pattern)
   /// Sew first on a mesh this many times coarser, then refine (0 or < 1.5: single level). Off by
   /// default: on GarmentCode's shirt_mean the coarse mesh tangled a sleeve (strain 3.1 % mean,
@@ -30,6 +36,14 @@ struct SewOptions {
   /// Phase B: stiffness of the sewn seams' segments against their pattern length, relative to
   /// the membrane (0: seams stretch like the fabric around them).
   double seam_edge_weight = 200;
+  /// XPBD sewing: the speed at which each seam's allowed gap shrinks, the gap below which a
+  /// seam counts as closed (its sides are then merged), the simulated time limit, and the
+  /// distance kept between layers. No ARAP relaxation follows (the drape settles the garment).
+  double xpbd_close_mm_s = 250;
+  double xpbd_done_gap_mm = 1;
+  double xpbd_duration_s = 8;
+  double xpbd_stall_s = 0.5;  ///< also stops once the widest gap has not narrowed by 1 % for this long
+  double xpbd_self_thickness_mm = 2;
   int threads = 2;
   /// Progress: the share of the planned sewing and relaxing iterations done, called once per
   /// iteration (may be empty). Phase B may stop early, so the last call can be below 1.

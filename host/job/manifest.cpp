@@ -72,7 +72,7 @@ void read_material(FieldReader& g, GarmentMaterialSpec& spec) {
 
 void read_garment(FieldReader g, const JobPackage* pkg, GarmentSpec& spec) {
   g.reject_unknown({"pattern", "pattern_format", "garment_mesh", "sample", "size", "body", "stitches", "mesh_edge",
-                    "suggest_min_score", "stitches_file", "checks", "material", "drape", "correspondence"});
+                    "suggest_min_score", "stitches_file", "checks", "material", "drape", "correspondence", "sewing"});
   read_asset(g, "pattern", false, pkg, spec.pattern);
   if (auto v = g.choice("pattern_format", false, {"auto", "native", "garmentcode", "freesewing-svg", "dxf-aama"}))
     spec.pattern_format = *v;
@@ -92,6 +92,7 @@ void read_garment(FieldReader g, const JobPackage* pkg, GarmentSpec& spec) {
   }
   read_material(g, spec.material);
   if (auto v = g.boolean("drape", false)) spec.drape = *v;
+  if (auto v = g.choice("sewing", false, {"arap", "xpbd"})) spec.sewing = *v;
   if (auto v = g.choice("correspondence", false, {"sewn", "draped"})) spec.correspondence = *v;
   if (spec.correspondence == "draped" && !spec.drape)
     g.problems().add(g.pointer_of("correspondence"), "\"draped\" needs \"drape\": true");

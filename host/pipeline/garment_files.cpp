@@ -54,6 +54,40 @@ Result<std::vector<std::string>> write_garment_previews(const std::filesystem::p
   return names;
 }
 
+Result<std::vector<std::string>> write_garment_print_previews(const std::filesystem::path& dir,
+                                                              const std::string& prefix,
+                                                              const geometry::Garment& garment,
+                                                              const geometry::BodyMesh* body,
+                                                              const geometry::PieceRenderer& renderer, double dpi) {
+  std::vector<geometry::PieceTexture> textures(garment.pieces.size());
+  for (size_t i = 0; i < garment.pieces.size(); ++i) {
+    const int piece = garment.pieces[i].piece;
+    if (piece < 0 || piece >= renderer.piece_count()) continue;
+    geometry::PieceImage img = geometry::render_piece_image(renderer, piece, dpi);
+    if (img.image.width_px <= 0 || img.image.height_px <= 0) continue;
+    // The print over white fabric: the preview shows the garment as it comes off the press.
+    for (geometry::Rgba8& p : img.image.pixels) {
+      const auto over = [a = p.a](std::uint8_t c) {
+        return static_cast<std::uint8_t>((c * a + 255 * (255 - a) + 127) / 255);
+      };
+      p = {over(p.r), over(p.g), over(p.b), 255};
+    }
+    textures[i] = {std::move(img.image), img.pixel_to_piece_mm.inverse()};
+  }
+  geometry::PreviewOptions o;
+  o.textures = &textures;
+  std::vector<std::string> names;
+  for (auto view : {geometry::PreviewView::kFront, geometry::PreviewView::kSide, geometry::PreviewView::kBack}) {
+    const std::string name = prefix + geometry::to_string(view) + ".png";
+    if (auto st = internal::write_png_checked(dir / name, geometry::render_preview(garment, body, view, o),
+                                              rip::PngChannels::kRgba);
+        !st)
+      return fail(st.error());
+    names.push_back(name);
+  }
+  return names;
+}
+
 Status write_garment_files(const std::filesystem::path& dir, const std::string& stem, const geometry::Pattern& pattern,
                            const geometry::Garment& garment, const geometry::BodyMesh& body,
                            const std::string& body_stem) {

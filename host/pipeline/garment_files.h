@@ -53,4 +53,11 @@ inline constexpr int kGarmentTextureMaxSidePx = 4096;
                                                                   const geometry::Garment& garment,
                                                                   const geometry::PieceRenderer& renderer, double max_dpi);
 
+/// Writes `<prefix>front.png`, `<prefix>side.png` and `<prefix>back.png`: the garment on `body`
+/// (when given) wearing its print, each piece's print (rendered at `dpi`, over white fabric)
+/// mapped through the piece's 2D mesh. Returns the file names; fails (kIo) naming the file.
+[[nodiscard]] Result<std::vector<std::string>> write_garment_print_previews(
+    const std::filesystem::path& dir, const std::string& prefix, const geometry::Garment& garment,
+    const geometry::BodyMesh* body, const geometry::PieceRenderer& renderer, double dpi);
+
 }  // namespace tp::host

@@ -120,12 +120,14 @@ Status stage_garment(PipelineState& ps) {
                    {"reason", al->reason}};
     geometry::SewOptions opt;
     opt.target_edge_mm = ps.job.garment.mesh_edge_mm;
+    opt.solver = ps.job.garment.sewing == "xpbd" ? geometry::SewSolver::kXpbd : geometry::SewSolver::kArap;
     opt.on_progress = garment_progress(ps, 0.0, ps.job.garment.drape ? 0.5 : 1.0, "sewing");
     auto g = geometry::sew_garment(ps.pattern, *ps.meshes, *ps.body, opt, &stats, &ps.cancel);
     if (!g) return fail(from_geometry(g.error()));
     ps.garment = std::move(*g);
     ps.garment_is_3d = true;
-    ps.report["sewing"] = {{"sewing_iterations", stats.sewing_iterations},
+    ps.report["sewing"] = {{"solver", ps.job.garment.sewing},
+                           {"sewing_iterations", stats.sewing_iterations},
                            {"relax_iterations", stats.relax_iterations},
                            {"contacts", stats.contacts},
                            {"wall_s", stats.seconds}};

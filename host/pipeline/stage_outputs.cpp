@@ -18,6 +18,9 @@
 
 namespace tp::host::internal {
 
+// Print previews: the pieces' prints at about 1.2 px/mm, finer than a 600 x 900 preview of a body.
+constexpr double kPrintPreviewDpi = 30;
+
 namespace {
 
 // Piece names become file names: keep letters, digits, '-', '_' and '.'.
@@ -65,6 +68,11 @@ Status stage_outputs(PipelineState& ps) {
     files["texture_dpi"] = tex->texture_dpi;
     files["texture_width_px"] = tex->texture_width_px;
     files["texture_height_px"] = tex->texture_height_px;
+    // The garment wearing its print, as the sewn previews see it.
+    auto worn = write_garment_print_previews(out, "garment-print-", *ps.garment, ps.body ? &ps.body->mesh() : nullptr,
+                                             *ps.renderer, kPrintPreviewDpi);
+    if (!worn) return fail(worn.error());
+    files["print_previews"] = *worn;
   }
 
   // Cut contours exactly where the pieces were printed on the roll.

@@ -35,6 +35,15 @@ struct ClothModel {
   std::vector<std::array<int, 2>> edges;      ///< unique undirected edges (self-collision)
   std::vector<int> vertex_piece;              ///< #V piece of the vertex's first chart
   double mean_edge_mm = 0;
+  /// Sewing only (empty when draping a sewn garment): vertex pairs a stitch draws together,
+  /// and per vertex its weld group (the lowest vertex stitched to it, transitively; itself if
+  /// none). Self-collision treats vertices of one group as one vertex, so seam sides can meet.
+  std::vector<std::array<int, 2>> stitches;
+  std::vector<int> weld_group;
+  /// Sewing only: per stitched vertex, the sorted weld groups of itself and its mesh neighbours
+  /// (empty for other vertices). Self-collision skips a pair where one primitive's vertex has
+  /// the other's in this list: the seam's own neighbourhood closing is not a collision.
+  std::vector<std::vector<int>> seam_near;
 };
 
 /// Builds the model of `g` (its 3D positions and its charts' rest shapes). Triangles a seam

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <thread>
 
 namespace tp::geometry::internal {
 namespace {
@@ -96,10 +97,38 @@ void for_cells(const SpatialHash& h, Vec3 lo, Vec3 hi, Fn&& fn) {
       for (int k = a[2]; k <= b[2]; ++k) fn(h.slot(i, j, k));
 }
 
+// Runs fn(begin, end, list) over `threads` ranges of [0, n), each into its own list, and appends
+// the lists to `out` in range order.
+template <class T, class Fn>
+void in_ranges(size_t n, int threads, std::vector<T>& out, Fn&& fn) {
+  threads = std::clamp(threads, 1, 8);
+  if (threads == 1 || n < 2048) {
+    fn(0, n, out);
+    return;
+  }
+  std::vector<std::vector<T>> parts(threads);
+  std::vector<std::thread> pool;
+  for (int t = 1; t < threads; ++t) pool.emplace_back([&, t] { fn(n * t / threads, n * (t + 1) / threads, parts[t]); });
+  fn(0, n / threads, parts[0]);
+  for (auto& th : pool) th.join();
+  for (auto& part : parts) out.insert(out.end(), part.begin(), part.end());
+}
+
 }  // namespace
 
-SelfCollisionPairs find_self_collision_pairs(const ClothModel& cloth, const std::vector<Vec3>& x, double margin_mm) {
+SelfCollisionPairs find_self_collision_pairs(const ClothModel& cloth, const std::vector<Vec3>& x, double margin_mm,
+                                             int threads) {
   SelfCollisionPairs out;
+  // Vertices of one weld group count as one (seam sides being sewn may meet).
+  auto group = [&](int v) { return cloth.weld_group.empty() ? v : cloth.weld_group[v]; };
+  // Vertex u is in the seam neighbourhood of v (or v in u's).
+  auto seam_near = [&](int v, int u) {
+    if (cloth.seam_near.empty()) return false;
+    const auto& nv = cloth.seam_near[v];
+    const auto& nu = cloth.seam_near[u];
+    return (!nv.empty() && std::binary_search(nv.begin(), nv.end(), group(u))) ||
+           (!nu.empty() && std::binary_search(nu.begin(), nu.end(), group(v)));
+  };
   const double cell = std::max(cloth.mean_edge_mm, 2 * margin_mm);
   const Vec3 pad{margin_mm, margin_mm, margin_mm};
 
@@ -109,30 +138,37 @@ SelfCollisionPairs find_self_collision_pairs(const ClothModel& cloth, const std:
   vh.finish_counts();
   for (size_t i = 0; i < x.size(); ++i) { auto c = vh.cell(x[i]); vh.fill(vh.slot(c[0], c[1], c[2]), static_cast<int>(i)); }
   // Visited stamps dedupe a query's hits without sorting (the order stays the cells' order).
-  std::vector<int> found, stamp_v(x.size(), -1), stamp_e(cloth.edges.size(), -1);
-  for (size_t f = 0; f < cloth.triangles.size(); ++f) {
-    const RestTriangle& t = cloth.triangles[f];
-    const Vec3 a = x[t.v[0]], b = x[t.v[1]], c = x[t.v[2]];
-    const Vec3 lo{std::min({a.x, b.x, c.x}), std::min({a.y, b.y, c.y}), std::min({a.z, b.z, c.z})};
-    const Vec3 hi{std::max({a.x, b.x, c.x}), std::max({a.y, b.y, c.y}), std::max({a.z, b.z, c.z})};
-    found.clear();
-    for_cells(vh, lo - pad, hi + pad, [&](size_t s) {
-      vh.visit(s, [&](int v) {
-        if (stamp_v[v] != static_cast<int>(f)) stamp_v[v] = static_cast<int>(f), found.push_back(v);
+  // Ranges of triangles (and of edges below) run on their own threads into their own lists,
+  // joined in range order: the pairs and their order do not depend on the thread count.
+  auto point_triangle = [&](size_t f0, size_t f1, std::vector<PointTrianglePair>& pt_out) {
+    std::vector<int> found, stamp_v(x.size(), -1);
+    for (size_t f = f0; f < f1; ++f) {
+      const RestTriangle& t = cloth.triangles[f];
+      const Vec3 a = x[t.v[0]], b = x[t.v[1]], c = x[t.v[2]];
+      const Vec3 lo{std::min({a.x, b.x, c.x}), std::min({a.y, b.y, c.y}), std::min({a.z, b.z, c.z})};
+      const Vec3 hi{std::max({a.x, b.x, c.x}), std::max({a.y, b.y, c.y}), std::max({a.z, b.z, c.z})};
+      found.clear();
+      for_cells(vh, lo - pad, hi + pad, [&](size_t s) {
+        vh.visit(s, [&](int v) {
+          if (stamp_v[v] != static_cast<int>(f)) stamp_v[v] = static_cast<int>(f), found.push_back(v);
+        });
       });
-    });
-    const Vec3 n = triangle_normal(x, t);
-    const Vec3 plo = lo - pad, phi = hi + pad;
-    for (int v : found) {
-      if (v == t.v[0] || v == t.v[1] || v == t.v[2]) continue;
-      const Vec3 q0 = x[v];
-      if (q0.x < plo.x || q0.y < plo.y || q0.z < plo.z || q0.x > phi.x || q0.y > phi.y || q0.z > phi.z) continue;
-      const auto w = closest_on_triangle(x[v], a, b, c);
-      const Vec3 q = a * w[0] + b * w[1] + c * w[2];
-      if (norm(x[v] - q) >= margin_mm) continue;
-      out.point_triangle.push_back({v, static_cast<int>(f), dot(x[v] - q, n) >= 0 ? 1.0 : -1.0});
+      const Vec3 n = triangle_normal(x, t);
+      const Vec3 plo = lo - pad, phi = hi + pad;
+      for (int v : found) {
+        const int gv = group(v);
+        if (gv == group(t.v[0]) || gv == group(t.v[1]) || gv == group(t.v[2])) continue;
+        if (seam_near(v, t.v[0]) || seam_near(v, t.v[1]) || seam_near(v, t.v[2])) continue;
+        const Vec3 q0 = x[v];
+        if (q0.x < plo.x || q0.y < plo.y || q0.z < plo.z || q0.x > phi.x || q0.y > phi.y || q0.z > phi.z) continue;
+        const auto w = closest_on_triangle(x[v], a, b, c);
+        const Vec3 q = a * w[0] + b * w[1] + c * w[2];
+        if (norm(x[v] - q) >= margin_mm) continue;
+        pt_out.push_back({v, static_cast<int>(f), dot(x[v] - q, n) >= 0 ? 1.0 : -1.0});
+      }
     }
-  }
+  };
+  in_ranges(cloth.triangles.size(), threads, out.point_triangle, point_triangle);
 
   // Edge-edge: edges hashed into every cell their padded box covers, then paired per cell.
   SpatialHash eh(cell, cloth.edges.size() * 4);
@@ -152,29 +188,37 @@ SelfCollisionPairs find_self_collision_pairs(const ClothModel& cloth, const std:
     edge_box(cloth.edges[k], lo, hi);
     for_cells(eh, lo, hi, [&](size_t s) { eh.fill(s, static_cast<int>(k)); });
   }
-  for (size_t k = 0; k < cloth.edges.size(); ++k) {
-    const auto& ea = cloth.edges[k];
-    Vec3 lo, hi;
-    edge_box(ea, lo, hi);
-    found.clear();
-    for_cells(eh, lo, hi, [&](size_t s) {
-      eh.visit(s, [&](int o) {
-        if (o > static_cast<int>(k) && stamp_e[o] != static_cast<int>(k)) stamp_e[o] = static_cast<int>(k), found.push_back(o);
+  auto edge_edge = [&](size_t k0, size_t k1, std::vector<EdgeEdgePair>& ee_out) {
+    std::vector<int> found, stamp_e(cloth.edges.size(), -1);
+    for (size_t k = k0; k < k1; ++k) {
+      const auto& ea = cloth.edges[k];
+      Vec3 lo, hi;
+      edge_box(ea, lo, hi);
+      found.clear();
+      for_cells(eh, lo, hi, [&](size_t s) {
+        eh.visit(s, [&](int o) {
+          if (o > static_cast<int>(k) && stamp_e[o] != static_cast<int>(k))
+            stamp_e[o] = static_cast<int>(k), found.push_back(o);
+        });
       });
-    });
-    for (int o : found) {
-      const auto& eb = cloth.edges[o];
-      if (ea[0] == eb[0] || ea[0] == eb[1] || ea[1] == eb[0] || ea[1] == eb[1]) continue;
-      Vec3 olo, ohi;
-      edge_box(eb, olo, ohi);
-      if (olo.x > hi.x || olo.y > hi.y || olo.z > hi.z || ohi.x < lo.x || ohi.y < lo.y || ohi.z < lo.z) continue;
-      const auto st = closest_on_segments(x[ea[0]], x[ea[1]], x[eb[0]], x[eb[1]]);
-      const Vec3 pa = x[ea[0]] * (1 - st[0]) + x[ea[1]] * st[0], pb = x[eb[0]] * (1 - st[1]) + x[eb[1]] * st[1];
-      const double d = norm(pa - pb);
-      if (d >= margin_mm || d < 1e-9) continue;
-      out.edge_edge.push_back({static_cast<int>(k), o, (pa - pb) / d});
+      for (int o : found) {
+        const auto& eb = cloth.edges[o];
+        Vec3 olo, ohi;
+        edge_box(eb, olo, ohi);
+        if (olo.x > hi.x || olo.y > hi.y || olo.z > hi.z || ohi.x < lo.x || ohi.y < lo.y || ohi.z < lo.z) continue;
+        const int a0 = group(ea[0]), a1 = group(ea[1]), b0 = group(eb[0]), b1 = group(eb[1]);
+        if (a0 == b0 || a0 == b1 || a1 == b0 || a1 == b1) continue;
+        if (seam_near(ea[0], eb[0]) || seam_near(ea[0], eb[1]) || seam_near(ea[1], eb[0]) || seam_near(ea[1], eb[1]))
+          continue;
+        const auto st = closest_on_segments(x[ea[0]], x[ea[1]], x[eb[0]], x[eb[1]]);
+        const Vec3 pa = x[ea[0]] * (1 - st[0]) + x[ea[1]] * st[0], pb = x[eb[0]] * (1 - st[1]) + x[eb[1]] * st[1];
+        const double d = norm(pa - pb);
+        if (d >= margin_mm || d < 1e-9) continue;
+        ee_out.push_back({static_cast<int>(k), o, (pa - pb) / d});
+      }
     }
-  }
+  };
+  in_ranges(cloth.edges.size(), threads, out.edge_edge, edge_edge);
   return out;
 }
 

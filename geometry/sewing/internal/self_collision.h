@@ -30,8 +30,10 @@ struct SelfCollisionPairs {
 };
 
 /// Every vertex-triangle and edge-edge pair (sharing no vertex) closer than `margin_mm` at `x`,
-/// found through a spatial hash of cell size about the mean edge, in a fixed order.
-SelfCollisionPairs find_self_collision_pairs(const ClothModel& cloth, const std::vector<Vec3>& x, double margin_mm);
+/// found through a spatial hash of cell size about the mean edge, in a fixed order (the same for
+/// any `threads`, which split the queries).
+SelfCollisionPairs find_self_collision_pairs(const ClothModel& cloth, const std::vector<Vec3>& x, double margin_mm,
+                                             int threads = 1);
 
 /// Pushes every candidate pair found closer than `thickness_mm` (or on the other side than it
 /// was found on) apart to `thickness_mm`, moving the vertices in proportion to their inverse

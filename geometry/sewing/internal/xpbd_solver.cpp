@@ -113,13 +113,23 @@ Result<XpbdStats> run_xpbd(ClothModel& cloth, const BodySdf& body, const XpbdPar
   std::vector<Vec3> normal(n);
   std::vector<double> depth(n);
   SelfCollisionPairs pairs;
+  // Sewing: every stitched pair's allowed distance shrinks from its start at a fixed speed.
+  const bool sewing = !cloth.stitches.empty();
+  std::vector<double> stitch_start(cloth.stitches.size());
+  double widest = 0;
+  for (size_t k = 0; k < cloth.stitches.size(); ++k) {
+    stitch_start[k] = norm(x[cloth.stitches[k][0]] - x[cloth.stitches[k][1]]);
+    widest = std::max(widest, stitch_start[k]);
+  }
+  const double close_s = p.stitch_close_mm_s > 0 ? widest / p.stitch_close_mm_s : 0;
+  double best_gap = 1e300, best_at_s = 0;
 
   for (int step = 0; step < total; ++step) {
     if (cancel && cancel->cancelled()) return fail(ErrorCode::kCancelled, "draping cancelled");
     if (step % broad_every == 0) {
       if (p.on_progress) p.on_progress(static_cast<double>(step) / total);
       budget = std::clamp(1.5 * last_move + 0.05, 0.05, p.max_move_mm);
-      pairs = find_self_collision_pairs(cloth, x, p.self_thickness_mm + 2 * broad_every * 2 * budget);
+      pairs = find_self_collision_pairs(cloth, x, p.self_thickness_mm + 2 * broad_every * 2 * budget, p.threads);
       st.self_pairs = static_cast<int>(pairs.point_triangle.size() + pairs.edge_edge.size());
     }
     // Predict: gravity and damping on the velocities, positions advanced.
@@ -132,9 +142,27 @@ Result<XpbdStats> run_xpbd(ClothModel& cloth, const BodySdf& body, const XpbdPar
       if (speed * dt > budget) v[i] = v[i] * (budget / (speed * dt));
       x[i] += v[i] * dt;
     }
-    // Membrane, then bending, in their fixed order.
-    for (int pass = 0; pass < p.stretch_passes; ++pass)
-      for (const RestTriangle& t : cloth.triangles) project_triangle(t, cloth.inv_mass, p.stretch_limit, p.stretch_stiffness, x);
+    // Membrane (each pass followed by the stitches, so seams are not left to the last word of
+    // the strain limit), then bending, in their fixed order.
+    const double closed_mm = p.stitch_close_mm_s > 0 ? p.stitch_close_mm_s * (step + 1) * dt : 1e300;
+    auto project_stitches = [&] {
+      for (size_t k = 0; k < cloth.stitches.size(); ++k) {
+        const int i = cloth.stitches[k][0], j = cloth.stitches[k][1];
+        const double allowed = std::max(stitch_start[k] - closed_mm, 0.0);
+        const Vec3 d = x[i] - x[j];
+        const double len = norm(d);
+        const double wsum = cloth.inv_mass[i] + cloth.inv_mass[j];
+        if (len <= allowed || wsum <= 0 || len < 1e-12) continue;
+        const Vec3 corr = d * ((len - allowed) / (len * wsum));
+        x[i] -= corr * cloth.inv_mass[i];
+        x[j] += corr * cloth.inv_mass[j];
+      }
+    };
+    for (int pass = 0; pass < p.stretch_passes; ++pass) {
+      for (const RestTriangle& t : cloth.triangles)
+        project_triangle(t, cloth.inv_mass, p.stretch_limit, p.stretch_stiffness, x);
+      if (sewing) project_stitches();
+    }
     for (const BendStencil& s : cloth.bends) project_bend(s, cloth.inv_mass, dt2, x);
     // No vertex travels further than twice the budget in a substep: pairs cannot tunnel.
     for (int i = 0; i < n; ++i) {
@@ -185,6 +213,18 @@ Result<XpbdStats> run_xpbd(ClothModel& cloth, const BodySdf& body, const XpbdPar
     st.substeps = step + 1;
     st.simulated_s = st.substeps * dt;
     if (!std::isfinite(st.max_speed_mm_s)) return fail(ErrorCode::kSewing, "cloth drape diverged");
+    if (sewing) {
+      // Sewn: the seams closed (checked once the widest has had the time to close).
+      if (st.simulated_s < close_s) continue;
+      double gap = 0;
+      for (const auto& pr : cloth.stitches) gap = std::max(gap, norm(x[pr[0]] - x[pr[1]]));
+      st.stitch_gap_max_mm = gap;
+      if (gap < p.stitch_done_mm) break;
+      // Stalled: the widest gap has not narrowed by 1 % for the stall time (a seam held open).
+      if (gap < 0.99 * best_gap) best_gap = gap, best_at_s = st.simulated_s;
+      if (st.simulated_s - best_at_s > p.stitch_stall_s) break;
+      continue;
+    }
     // Settled: all but 0.5 % of the vertices slower than the settle speed.
     if (st.simulated_s >= 0.3 && moving <= n / 200) break;
   }

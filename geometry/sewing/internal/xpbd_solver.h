@@ -28,7 +28,15 @@ struct XpbdParams {
   double stretch_stiffness = 1.0;
   double friction = 0.4;
   double settle_speed_mm_s = 4;      ///< stop early once 99.5 % of the vertices are slower (after 0.3 s)
-  int threads = 2;                   ///< body queries only; results do not depend on it
+  /// Sewing (cloth.stitches not empty): each stitched pair may be no further apart than its
+  /// distance at the start minus this speed x time, so the seams close gradually (0: at once).
+  double stitch_close_mm_s = 100;
+  /// Sewing stops once every stitched pair is closer than this (and the cloth has had the time
+  /// to close its widest gap); the settle test is not used.
+  double stitch_done_mm = 1;
+  /// Sewing also stops once the widest gap has not narrowed by 1 % for this long (simulated s).
+  double stitch_stall_s = 0.5;
+  int threads = 2;  ///< body queries and pair search; results do not depend on it
   /// Called at each broad phase with the share of the time limit simulated (progress), may be empty.
   std::function<void(double fraction)> on_progress;
 };
@@ -41,6 +49,7 @@ struct XpbdStats {
   int body_contacts = 0;        ///< vertices touching the body in the last substep
   int self_contacts = 0;        ///< pairs held apart in the last substep
   int self_pairs = 0;           ///< candidate pairs of the last broad phase
+  double stitch_gap_max_mm = 0;  ///< sewing: the widest stitched pair at the end
 };
 
 /// Steps `cloth` (positions updated in place, starting at rest) under `p` on `body`.

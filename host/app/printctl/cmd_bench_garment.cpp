@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -264,6 +265,16 @@ void register_bench_garment(CLI::App& bench) {
       ->check(CLI::Range(0.0, 1e6));
   cmd->add_option("--gravity", args->sew.gravity_per_mm, "weight per area relative to membrane stiffness")
       ->check(CLI::Range(0.0, 1.0));
+  cmd->add_option("--solver", args->sew.solver, "sewing solver: arap (springs) or xpbd (cloth with self-collision)")
+      ->transform(CLI::CheckedTransformer(std::map<std::string, geometry::SewSolver>{
+          {"arap", geometry::SewSolver::kArap}, {"xpbd", geometry::SewSolver::kXpbd}}));
+  cmd->add_option("--xpbd-close-speed", args->sew.xpbd_close_mm_s, "XPBD sewing: seam closing speed (mm/s)")
+      ->check(CLI::Range(1.0, 10000.0));
+  cmd->add_option("--xpbd-duration", args->sew.xpbd_duration_s, "XPBD sewing: simulated time limit (s)")
+      ->check(CLI::Range(0.01, 100.0));
+  cmd->add_option("--xpbd-stall", args->sew.xpbd_stall_s,
+                  "XPBD sewing: stop once the widest seam gap stalls this long (s)")
+      ->check(CLI::Range(0.01, 100.0));
   cmd->add_option("--corpus", args->corpus, "bench every pattern of this folder on its body (sidecar <stem>.body.json "
                                             "or the rules in docs/garments.md); repeatable")
       ->check(CLI::ExistingDirectory);

@@ -68,5 +68,27 @@ TEST(PieceColour, DistinctForNeighbouringPieces) {
   EXPECT_EQ(seen.size(), 10u);
 }
 
+TEST(RenderPreview, TexturedPieceShowsItsPrintWhereItsUvsPutIt) {
+  // A texture of the panel at 1 px/mm: red on its left half (piece x < 100), blue on its right.
+  Garment g = panel();
+  std::vector<PieceTexture> tex(1);
+  tex[0].image.width_px = 200, tex[0].image.height_px = 100;
+  for (int y = 0; y < 100; ++y)
+    for (int x = 0; x < 200; ++x)
+      tex[0].image.pixels.push_back(x < 100 ? Rgba8{230, 20, 20, 255} : Rgba8{20, 20, 230, 255});
+  tex[0].piece_mm_to_px = Affine2{};  // identity: pixel (x, y) is piece mm (x, y)
+  PreviewOptions o{.width_px = 200, .height_px = 100, .supersample = 1, .draw_body = false, .draw_seams = false};
+  o.textures = &tex;
+  // From the front the piece's x runs to the image's right: red left of centre, blue right.
+  ImageRgba8 front = render_preview(g, nullptr, PreviewView::kFront, o);
+  const Rgba8 l = front.at(60, 50), r = front.at(140, 50);
+  EXPECT_GT(l.r, 3 * l.b) << int(l.r) << "," << int(l.b);
+  EXPECT_GT(r.b, 3 * r.r) << int(r.r) << "," << int(r.b);
+  // From the back the halves swap sides.
+  ImageRgba8 back = render_preview(g, nullptr, PreviewView::kBack, o);
+  EXPECT_GT(back.at(60, 50).b, 3 * back.at(60, 50).r);
+  EXPECT_GT(back.at(140, 50).r, 3 * back.at(140, 50).b);
+}
+
 }  // namespace
 }  // namespace tp::geometry

@@ -59,5 +59,17 @@ TEST_F(GarmentMaterialTest, BadValuesNameTheField) {
   EXPECT_NE(job.error().message.find("/garment/correspondence"), std::string::npos) << job.error().message;
 }
 
+TEST_F(GarmentMaterialTest, SewingSolverIsArapByDefaultOrXpbd) {
+  auto job = load("");
+  ASSERT_TRUE(job) << job.error().message;
+  EXPECT_EQ(job->garment.sewing, "arap");
+  job = load(R"(, "sewing": "xpbd")");
+  ASSERT_TRUE(job) << job.error().message;
+  EXPECT_EQ(job->garment.sewing, "xpbd");
+  job = load(R"(, "sewing": "springs")");
+  ASSERT_FALSE(job);
+  EXPECT_NE(job.error().message.find("/garment/sewing"), std::string::npos) << job.error().message;
+}
+
 }  // namespace
 }  // namespace tp::host

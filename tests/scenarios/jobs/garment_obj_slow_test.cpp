@@ -84,6 +84,12 @@ TEST(GarmentObj, AssimpOpensTheGarmentWithItsPrintAsTextureAndUvsInTheUnitSquare
   EXPECT_NE(png.output.find("chunk pHYs"), std::string::npos) << png.output;
   EXPECT_LE(files["texture_width_px"].get<int>(), 4096);
   EXPECT_LE(files["texture_height_px"].get<int>(), 4096);
+  // The garment wearing its print, front, side and back: valid PNGs.
+  ASSERT_EQ(files["print_previews"].size(), 3u);
+  for (const auto& name : files["print_previews"]) {
+    auto pv = run_command({"pngcheck", (out / name.get<std::string>()).string()});
+    EXPECT_EQ(pv.exit_code, 0) << pv.output;
+  }
 
   // The 3D job's report against the schema as well.
   auto v = run_command({"/usr/bin/python3", "-c",

@@ -1,0 +1,86 @@
+// geometry/sewing/internal/xpbd_sewing.cpp: the unsewn pieces as one XPBD cloth whose stitches
+// close at a fixed speed.
+#include "geometry/sewing/internal/xpbd_sewing.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <numeric>
+
+#include "geometry/garment/garment.h"
+#include "geometry/sewing/internal/cloth_model.h"
+#include "geometry/sewing/internal/xpbd_solver.h"
+
+namespace tp::geometry::internal {
+namespace {
+
+int find_root(std::vector<int>& parent, int i) {
+  while (parent[i] != i) i = parent[i] = parent[parent[i]];
+  return i;
+}
+
+}  // namespace
+
+Result<XpbdSewStats> sew_pieces_xpbd(const PatternMesh& meshes, const std::vector<int>& offset,
+                                     const std::vector<std::array<int, 2>>& stitches, const BodySdf& body,
+                                     const XpbdSewParams& p, std::vector<Vec3>& x_mm, const CancelToken* cancel) {
+  // The pieces as a garment whose seams are still open: each piece its own vertices.
+  Garment open;
+  open.vertices_mm = x_mm;
+  for (size_t pi = 0; pi < meshes.pieces.size(); ++pi) {
+    GarmentPiece gp;
+    gp.piece = static_cast<int>(pi);
+    gp.mesh = meshes.pieces[pi];
+    gp.vertex_3d.resize(gp.mesh.vertices_mm.size());
+    std::iota(gp.vertex_3d.begin(), gp.vertex_3d.end(), offset[pi]);
+    open.pieces.push_back(std::move(gp));
+  }
+  ClothModel cloth = build_cloth_model(open, p.material);
+  cloth.stitches = stitches;
+  // Weld groups: the lowest vertex of each transitively stitched set.
+  const int n = static_cast<int>(x_mm.size());
+  std::vector<int> parent(n);
+  std::iota(parent.begin(), parent.end(), 0);
+  for (const auto& s : stitches) {
+    const int a = find_root(parent, s[0]), b = find_root(parent, s[1]);
+    if (a != b) parent[std::max(a, b)] = std::min(a, b);
+  }
+  cloth.weld_group.resize(n);
+  for (int i = 0; i < n; ++i) cloth.weld_group[i] = find_root(parent, i);
+  // Seam neighbourhoods: each stitched vertex's group and its mesh neighbours' groups.
+  cloth.seam_near.assign(n, {});
+  std::vector<uint8_t> stitched(n, 0);
+  for (const auto& s : stitches) stitched[s[0]] = stitched[s[1]] = 1;
+  for (int i = 0; i < n; ++i)
+    if (stitched[i]) cloth.seam_near[i].push_back(cloth.weld_group[i]);
+  for (const auto& e : cloth.edges) {
+    if (stitched[e[0]]) cloth.seam_near[e[0]].push_back(cloth.weld_group[e[1]]);
+    if (stitched[e[1]]) cloth.seam_near[e[1]].push_back(cloth.weld_group[e[0]]);
+  }
+  for (auto& list : cloth.seam_near) {
+    std::sort(list.begin(), list.end());
+    list.erase(std::unique(list.begin(), list.end()), list.end());
+  }
+
+  XpbdParams xp;
+  xp.duration_s = p.duration_s;
+  xp.gravity_mm_s2 = 0;
+  xp.damping_per_s = p.damping_per_s;
+  xp.body_thickness_mm = p.clearance_mm;
+  xp.self_thickness_mm = p.self_thickness_mm;
+  xp.max_move_mm = 0.15 * p.self_thickness_mm;
+  xp.stretch_limit = p.material.stretch_limit;
+  xp.stretch_stiffness = p.material.stretch_stiffness;
+  xp.friction = 0;  // seams slide over the body while they close
+  xp.stitch_close_mm_s = p.close_mm_s;
+  xp.stitch_done_mm = p.done_gap_mm;
+  xp.stitch_stall_s = p.stall_s;
+  xp.threads = p.threads;
+  xp.on_progress = p.on_progress;
+  auto r = run_xpbd(cloth, body, xp, cancel);
+  if (!r) return fail(r.error().with_context("XPBD sewing"));
+  x_mm = std::move(cloth.x_mm);
+  return XpbdSewStats{
+      .substeps = r->substeps, .simulated_s = r->simulated_s, .stitch_gap_max_mm = r->stitch_gap_max_mm};
+}
+
+}  // namespace tp::geometry::internal

@@ -1,0 +1,48 @@
+// geometry/sewing/internal/xpbd_sewing.h: sewing with the XPBD cloth solver: the placed pieces'
+// stitched vertex pairs drawn together gradually while self-collision keeps layers apart.
+#pragma once
+
+#include <array>
+#include <functional>
+#include <vector>
+
+#include "geometry/body/body_sdf.h"
+#include "geometry/common/cancel.h"
+#include "geometry/common/error.h"
+#include "geometry/mesh/mesh_pattern.h"
+#include "geometry/sewing/cloth_material.h"
+
+namespace tp::geometry::internal {
+
+/// Settings of an XPBD sewing run (lengths mm, time s).
+struct XpbdSewParams {
+  ClothMaterial material;        ///< the fabric the pieces are simulated in while sewn
+  double close_mm_s = 100;       ///< speed at which every seam's allowed gap shrinks
+  double done_gap_mm = 1;        ///< sewn once every stitched pair is closer than this
+  double duration_s = 8;         ///< simulated time limit
+  double stall_s = 0.5;          ///< stop once the widest gap has not narrowed by 1 % for this long
+  double clearance_mm = 3;       ///< distance kept from the body
+  double self_thickness_mm = 2;  ///< distance kept between layers
+  double damping_per_s = 10;
+  int threads = 2;
+  std::function<void(double fraction)> on_progress;
+};
+
+/// What the run did.
+struct XpbdSewStats {
+  int substeps = 0;
+  double simulated_s = 0;
+  double stitch_gap_max_mm = 0;
+};
+
+/// Sews the pieces of `meshes` (vertex v of piece p is x_mm[offset[p] + v], the placed start
+/// positions, updated in place) with the stitched pairs `stitches` (global numbering): gravity
+/// off, the pairs' allowed distance shrinking at `close_mm_s`, self-collision and body contact
+/// active from the first substep. Stops when every pair is within `done_gap_mm` or at the time
+/// limit (the caller measures the gaps). Fails with kSewing if the solver diverges, kCancelled.
+[[nodiscard]] Result<XpbdSewStats> sew_pieces_xpbd(const PatternMesh& meshes, const std::vector<int>& offset,
+                                                   const std::vector<std::array<int, 2>>& stitches, const BodySdf& body,
+                                                   const XpbdSewParams& p, std::vector<Vec3>& x_mm,
+                                                   const CancelToken* cancel);
+
+}  // namespace tp::geometry::internal
