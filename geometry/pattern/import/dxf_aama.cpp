@@ -1,13 +1,13 @@
 // geometry/pattern/dxf_aama.cpp: DXF-AAMA blocks (layers, polylines, texts) to pattern pieces.
-#include "geometry/pattern/dxf_aama.h"
+#include "geometry/pattern/import/dxf_aama.h"
 
 #include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <map>
 
-#include "geometry/pattern/internal/dxf_groups.h"
-#include "geometry/pattern/internal/dxf_piece.h"
+#include "geometry/pattern/import/internal/dxf_groups.h"
+#include "geometry/pattern/import/internal/dxf_piece.h"
 #include "geometry/pattern/internal/read_file.h"
 #include "geometry/pattern/internal/try.h"
 #include "geometry/pattern/unfold.h"

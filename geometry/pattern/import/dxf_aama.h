@@ -1,4 +1,4 @@
-// geometry/pattern/dxf_aama.h: importer for DXF-AAMA / ASTM D6673 cutting-room pattern files.
+// geometry/pattern/import/dxf_aama.h: importer for DXF-AAMA / ASTM D6673 cutting-room pattern files.
 #pragma once
 
 #include <filesystem>
@@ -6,7 +6,7 @@
 #include <string_view>
 
 #include "geometry/common/error.h"
-#include "geometry/pattern/import_options.h"
+#include "geometry/pattern/import/import_options.h"
 #include "geometry/pattern/pattern.h"
 
 namespace tp::geometry {

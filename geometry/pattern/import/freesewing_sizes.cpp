@@ -1,5 +1,5 @@
 // geometry/pattern/freesewing_sizes.cpp: FreeSewing's neck-graded female sizes mapped onto BodyMeasurements.
-#include "geometry/pattern/freesewing_sizes.h"
+#include "geometry/pattern/import/freesewing_sizes.h"
 
 #include <cctype>
 #include <cstdlib>

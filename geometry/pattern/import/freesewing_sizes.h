@@ -1,4 +1,5 @@
-// geometry/pattern/freesewing_sizes.h: FreeSewing's standard measurement sets (cisFemaleAdult28..46) as dress-form measurements.
+// geometry/pattern/import/freesewing_sizes.h: FreeSewing's standard measurement sets (cisFemaleAdult28..46) as
+// dress-form measurements.
 #pragma once
 
 #include <optional>

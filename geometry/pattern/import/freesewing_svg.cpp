@@ -1,16 +1,16 @@
 // geometry/pattern/freesewing_svg.cpp: walking a FreeSewing SVG's elements into parts, then pieces.
-#include "geometry/pattern/freesewing_svg.h"
+#include "geometry/pattern/import/freesewing_svg.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
 
+#include "geometry/pattern/import/internal/svg_part.h"
+#include "geometry/pattern/import/svg_path.h"
+#include "geometry/pattern/import/xml_tokenizer.h"
 #include "geometry/pattern/internal/read_file.h"
-#include "geometry/pattern/internal/svg_part.h"
 #include "geometry/pattern/internal/try.h"
-#include "geometry/pattern/svg_path.h"
 #include "geometry/pattern/unfold.h"
-#include "geometry/pattern/xml_tokenizer.h"
 
 namespace tp::geometry {
 namespace {

@@ -1,4 +1,4 @@
-// geometry/pattern/freesewing_svg.h: importer for patterns exported by FreeSewing as SVG.
+// geometry/pattern/import/freesewing_svg.h: importer for patterns exported by FreeSewing as SVG.
 #pragma once
 
 #include <filesystem>
@@ -6,7 +6,7 @@
 #include <string_view>
 
 #include "geometry/common/error.h"
-#include "geometry/pattern/import_options.h"
+#include "geometry/pattern/import/import_options.h"
 #include "geometry/pattern/pattern.h"
 
 namespace tp::geometry {

@@ -1,5 +1,5 @@
 // geometry/pattern/garmentcode.cpp: GarmentCode specification JSON to the pattern model.
-#include "geometry/pattern/garmentcode.h"
+#include "geometry/pattern/import/garmentcode.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-// geometry/pattern/garmentcode.h: importer for GarmentCode pattern specifications (JSON).
+// geometry/pattern/import/garmentcode.h: importer for GarmentCode pattern specifications (JSON).
 #pragma once
 
 #include <filesystem>
@@ -6,7 +6,7 @@
 #include <string_view>
 
 #include "geometry/common/error.h"
-#include "geometry/pattern/import_options.h"
+#include "geometry/pattern/import/import_options.h"
 #include "geometry/pattern/pattern.h"
 
 namespace tp::geometry {

@@ -1,4 +1,4 @@
-// geometry/pattern/import_options.h: options shared by every pattern importer.
+// geometry/pattern/import/import_options.h: options shared by every pattern importer.
 #pragma once
 
 #include "geometry/pattern/copies.h"

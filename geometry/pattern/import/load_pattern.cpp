@@ -1,16 +1,16 @@
 // geometry/pattern/load_pattern.cpp: format detection and dispatch to the importers.
-#include "geometry/pattern/load_pattern.h"
+#include "geometry/pattern/import/load_pattern.h"
 
 #include <algorithm>
 #include <cctype>
 
-#include "geometry/pattern/dxf_aama.h"
-#include "geometry/pattern/freesewing_svg.h"
-#include "geometry/pattern/garmentcode.h"
+#include "geometry/pattern/import/dxf_aama.h"
+#include "geometry/pattern/import/freesewing_svg.h"
+#include "geometry/pattern/import/garmentcode.h"
+#include "geometry/pattern/import/obj_garment.h"
 #include "geometry/pattern/internal/json_fields.h"
 #include "geometry/pattern/internal/read_file.h"
 #include "geometry/pattern/internal/try.h"
-#include "geometry/pattern/obj_garment.h"
 #include "geometry/pattern/pattern_json.h"
 
 namespace tp::geometry {

@@ -1,4 +1,4 @@
-// geometry/pattern/load_pattern.h: loading a pattern from any supported file, chosen by extension and content.
+// geometry/pattern/import/load_pattern.h: loading a pattern from any supported file, chosen by extension and content.
 #pragma once
 
 #include <filesystem>
@@ -6,7 +6,7 @@
 #include <string_view>
 
 #include "geometry/common/error.h"
-#include "geometry/pattern/import_options.h"
+#include "geometry/pattern/import/import_options.h"
 #include "geometry/pattern/pattern.h"
 
 namespace tp::geometry {

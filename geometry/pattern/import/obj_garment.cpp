@@ -1,5 +1,5 @@
 // geometry/pattern/obj_garment.cpp: UV islands of an OBJ garment to pieces, stitches and the 3D correspondence.
-#include "geometry/pattern/obj_garment.h"
+#include "geometry/pattern/import/obj_garment.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 #include <numeric>
 #include <set>
 
-#include "geometry/pattern/internal/obj_mesh.h"
+#include "geometry/pattern/import/internal/obj_mesh.h"
 #include "geometry/pattern/internal/read_file.h"
 #include "geometry/pattern/internal/try.h"
 #include "geometry/pattern/role.h"

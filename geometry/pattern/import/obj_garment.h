@@ -1,4 +1,4 @@
-// geometry/pattern/obj_garment.h: importer for a 3D garment OBJ whose texture coordinates are its pieces in mm.
+// geometry/pattern/import/obj_garment.h: importer for a 3D garment OBJ whose texture coordinates are its pieces in mm.
 #pragma once
 
 #include <filesystem>
@@ -7,7 +7,7 @@
 
 #include "geometry/common/error.h"
 #include "geometry/garment/garment.h"
-#include "geometry/pattern/import_options.h"
+#include "geometry/pattern/import/import_options.h"
 #include "geometry/pattern/pattern.h"
 
 namespace tp::geometry {

@@ -1,5 +1,5 @@
 // geometry/pattern/svg_path.cpp: SVG path-data and transform parsing, arcs to cubic Beziers.
-#include "geometry/pattern/svg_path.h"
+#include "geometry/pattern/import/svg_path.h"
 
 #include <algorithm>
 #include <charconv>

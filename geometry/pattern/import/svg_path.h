@@ -1,4 +1,4 @@
-// geometry/pattern/svg_path.h: SVG path data (M/L/H/V/C/S/Q/T/A/Z) and transform attribute parsing.
+// geometry/pattern/import/svg_path.h: SVG path data (M/L/H/V/C/S/Q/T/A/Z) and transform attribute parsing.
 #pragma once
 
 #include <array>

@@ -1,5 +1,5 @@
 // geometry/pattern/xml_tokenizer.cpp: tolerant XML tokenizing and entity decoding.
-#include "geometry/pattern/xml_tokenizer.h"
+#include "geometry/pattern/import/xml_tokenizer.h"
 
 #include <algorithm>
 #include <cctype>

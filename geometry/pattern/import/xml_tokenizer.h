@@ -1,4 +1,4 @@
-// geometry/pattern/xml_tokenizer.h: a small tolerant XML tokenizer (enough for SVG pattern files).
+// geometry/pattern/import/xml_tokenizer.h: a small tolerant XML tokenizer (enough for SVG pattern files).
 #pragma once
 
 #include <string>

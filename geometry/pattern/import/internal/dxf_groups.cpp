@@ -1,5 +1,5 @@
 // geometry/pattern/internal/dxf_groups.cpp: the DXF group-pair reader (sections, blocks, entities).
-#include "geometry/pattern/internal/dxf_groups.h"
+#include "geometry/pattern/import/internal/dxf_groups.h"
 
 #include <charconv>
 #include <cmath>

@@ -1,4 +1,4 @@
-// geometry/pattern/internal/dxf_groups.h: DXF group-code pairs grouped into sections, blocks and entities.
+// geometry/pattern/import/internal/dxf_groups.h: DXF group-code pairs grouped into sections, blocks and entities.
 #pragma once
 
 #include <string>

@@ -1,5 +1,5 @@
 // geometry/pattern/internal/dxf_piece.cpp: AAMA layers of one block (outline, notches, grain, texts) to a piece.
-#include "geometry/pattern/internal/dxf_piece.h"
+#include "geometry/pattern/import/internal/dxf_piece.h"
 
 #include <algorithm>
 #include <cctype>
@@ -11,7 +11,7 @@
 #include "geometry/common/aama_layers.h"
 #include "geometry/pattern/curve.h"
 #include "geometry/pattern/darts.h"
-#include "geometry/pattern/dxf_aama.h"
+#include "geometry/pattern/import/dxf_aama.h"
 #include "geometry/pattern/internal/text.h"
 #include "geometry/pattern/internal/try.h"
 #include "geometry/pattern/orient.h"

@@ -1,12 +1,12 @@
-// geometry/pattern/internal/dxf_piece.h: one DXF-AAMA block to a drafted piece.
+// geometry/pattern/import/internal/dxf_piece.h: one DXF-AAMA block to a drafted piece.
 #pragma once
 
 #include <string>
 #include <vector>
 
 #include "geometry/common/error.h"
-#include "geometry/pattern/import_options.h"
-#include "geometry/pattern/internal/dxf_groups.h"
+#include "geometry/pattern/import/import_options.h"
+#include "geometry/pattern/import/internal/dxf_groups.h"
 #include "geometry/pattern/pattern.h"
 
 namespace tp::geometry::internal {

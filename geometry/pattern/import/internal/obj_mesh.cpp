@@ -1,5 +1,5 @@
 // geometry/pattern/internal/obj_mesh.cpp: a small strict-where-it-matters OBJ reader.
-#include "geometry/pattern/internal/obj_mesh.h"
+#include "geometry/pattern/import/internal/obj_mesh.h"
 
 #include <charconv>
 #include <cmath>

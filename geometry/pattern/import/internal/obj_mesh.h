@@ -1,4 +1,4 @@
-// geometry/pattern/internal/obj_mesh.h: the parts of a Wavefront OBJ the garment importer reads.
+// geometry/pattern/import/internal/obj_mesh.h: the parts of a Wavefront OBJ the garment importer reads.
 #pragma once
 
 #include <array>

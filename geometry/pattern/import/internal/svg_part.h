@@ -1,4 +1,4 @@
-// geometry/pattern/internal/svg_part.h: what the FreeSewing reader collects per part before building a piece.
+// geometry/pattern/import/internal/svg_part.h: what the FreeSewing reader collects per part before building a piece.
 #pragma once
 
 #include <string>
@@ -6,7 +6,7 @@
 
 #include "geometry/common/error.h"
 #include "geometry/common/vec.h"
-#include "geometry/pattern/import_options.h"
+#include "geometry/pattern/import/import_options.h"
 #include "geometry/pattern/pattern.h"
 
 namespace tp::geometry::internal {

@@ -9,14 +9,14 @@
 
 #include "geometry/pattern/curve.h"
 #include "geometry/pattern/darts.h"
-#include "geometry/pattern/freesewing_svg.h"
-#include "geometry/pattern/internal/svg_part.h"
+#include "geometry/pattern/import/freesewing_svg.h"
+#include "geometry/pattern/import/internal/svg_part.h"
+#include "geometry/pattern/import/svg_path.h"
 #include "geometry/pattern/internal/text.h"
 #include "geometry/pattern/internal/try.h"
 #include "geometry/pattern/orient.h"
 #include "geometry/pattern/outline_segments.h"
 #include "geometry/pattern/role.h"
-#include "geometry/pattern/svg_path.h"
 
 namespace tp::geometry::internal {
 namespace {

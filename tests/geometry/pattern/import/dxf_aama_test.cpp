@@ -1,5 +1,5 @@
 // tests/geometry/pattern/dxf_aama_test.cpp: DXF-AAMA pieces: the example file, generated variants, broken files.
-#include "geometry/pattern/dxf_aama.h"
+#include "geometry/pattern/import/dxf_aama.h"
 
 #include <gtest/gtest.h>
 

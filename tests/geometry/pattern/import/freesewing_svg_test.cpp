@@ -1,5 +1,5 @@
 // tests/geometry/pattern/freesewing_svg_test.cpp: FreeSewing SVGs from the shared data, and broken or odd ones.
-#include "geometry/pattern/freesewing_svg.h"
+#include "geometry/pattern/import/freesewing_svg.h"
 
 #include <gtest/gtest.h>
 

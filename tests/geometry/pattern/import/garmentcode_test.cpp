@@ -1,5 +1,5 @@
 // tests/geometry/pattern/garmentcode_test.cpp: GarmentCode specifications from the shared data, and broken ones.
-#include "geometry/pattern/garmentcode.h"
+#include "geometry/pattern/import/garmentcode.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // tests/geometry/pattern/load_pattern_test.cpp: one entry point reads every supported format.
-#include "geometry/pattern/load_pattern.h"
+#include "geometry/pattern/import/load_pattern.h"
 
 #include <gtest/gtest.h>
 

@@ -1,5 +1,5 @@
 // tests/geometry/pattern/obj_garment_test.cpp: OBJ garments generated here (a 4-panel tube, a 1-panel tube) and broken ones.
-#include "geometry/pattern/obj_garment.h"
+#include "geometry/pattern/import/obj_garment.h"
 
 #include <gtest/gtest.h>
 

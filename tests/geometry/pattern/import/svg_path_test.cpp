@@ -1,5 +1,5 @@
 // tests/geometry/pattern/svg_path_test.cpp: SVG path data, arcs and transforms.
-#include "geometry/pattern/svg_path.h"
+#include "geometry/pattern/import/svg_path.h"
 
 #include <gtest/gtest.h>
 

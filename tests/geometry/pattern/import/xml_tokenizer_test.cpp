@@ -1,5 +1,5 @@
 // tests/geometry/pattern/xml_tokenizer_test.cpp: the tolerant XML tokenizer on good, odd and broken markup.
-#include "geometry/pattern/xml_tokenizer.h"
+#include "geometry/pattern/import/xml_tokenizer.h"
 
 #include <gtest/gtest.h>
 
