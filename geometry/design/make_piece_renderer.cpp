@@ -13,10 +13,10 @@
 #include "geometry/design/internal/band_mesh.h"
 #include "geometry/design/internal/closest_point.h"
 #include "geometry/design/internal/garment_surface.h"
-#include "geometry/design/internal/mip_image.h"
 #include "geometry/design/internal/piece_marks.h"
 #include "geometry/design/internal/render_builder.h"
-#include "geometry/design/internal/render_window.h"
+#include "geometry/design/raster/mip_image.h"
+#include "geometry/design/raster/render_window.h"
 #include "geometry/design/validate_design.h"
 
 namespace tp::geometry {

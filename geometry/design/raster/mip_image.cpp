@@ -1,5 +1,5 @@
-// geometry/design/internal/mip_image.cpp: builds the premultiplied mip pyramid of a source image.
-#include "geometry/design/internal/mip_image.h"
+// geometry/design/raster/mip_image.cpp: builds the premultiplied mip pyramid of a source image.
+#include "geometry/design/raster/mip_image.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-// geometry/design/internal/mip_image.h: a source image as a premultiplied sRGB mip pyramid with
+// geometry/design/raster/mip_image.h: a source image as a premultiplied sRGB mip pyramid with
 // padded borders, so the renderer's span samplers never branch on image edges.
 #pragma once
 

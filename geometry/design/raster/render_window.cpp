@@ -1,4 +1,4 @@
-// geometry/design/internal/render_window.cpp: the renderer's hot loop.
+// geometry/design/raster/render_window.cpp: the renderer's hot loop.
 //
 // Time budget: the RIP must reach 500 m²/h at 600 dpi on 2 cores including this rendering
 // (about 78 Mpx/s for everything), so a projected layer must render well above that. Per call:
@@ -6,13 +6,13 @@
 // filter once; per row: the outline's coverage, then one span per triangle sampled by the
 // integer span sampler, then one compositing pass. No allocation in steady state (thread-local
 // scratch), no per-pixel virtual call, no per-pixel branch on the filter kind.
-#include "geometry/design/internal/render_window.h"
+#include "geometry/design/raster/render_window.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstring>
 
-#include "geometry/design/internal/span_sampler.h"
+#include "geometry/design/raster/span_sampler.h"
 
 namespace tp::geometry::internal {
 namespace {

@@ -1,4 +1,4 @@
-// geometry/design/internal/render_window.h: renders one window of one piece (the body of
+// geometry/design/raster/render_window.h: renders one window of one piece (the body of
 // PieceRenderer::render), row by row.
 #pragma once
 

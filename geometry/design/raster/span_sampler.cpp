@@ -1,9 +1,9 @@
-// geometry/design/internal/span_sampler.cpp: bilinear, trilinear and anisotropic span sampling.
+// geometry/design/raster/span_sampler.cpp: bilinear, trilinear and anisotropic span sampling.
 //
 // Time budget: the RIP renders at 600 dpi at over 80 Mpx/s on 2 cores including colour and
 // screening, so the bilinear span loop is integer-only (32.32 fixed point coordinates, packed
 // 8-bit lerps) with one predictable branch per axis for wrapping.
-#include "geometry/design/internal/span_sampler.h"
+#include "geometry/design/raster/span_sampler.h"
 
 #include <algorithm>
 #include <cmath>

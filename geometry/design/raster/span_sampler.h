@@ -1,10 +1,10 @@
-// geometry/design/internal/span_sampler.h: filtered sampling of a mip image along a pixel span
+// geometry/design/raster/span_sampler.h: filtered sampling of a mip image along a pixel span
 // whose texture coordinates change linearly (one triangle, one row): the renderer's hot loop.
 #pragma once
 
 #include <cstdint>
 
-#include "geometry/design/internal/mip_image.h"
+#include "geometry/design/raster/mip_image.h"
 
 namespace tp::geometry::internal {
 

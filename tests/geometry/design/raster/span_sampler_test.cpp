@@ -1,13 +1,13 @@
 // tests/geometry/design/span_sampler_test.cpp: mip pyramid and span sampling: exact texels,
 // wrapping, transparent borders, and no aliasing when a fine pattern is minified.
-#include "geometry/design/internal/span_sampler.h"
+#include "geometry/design/raster/span_sampler.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 
-#include "geometry/design/internal/mip_image.h"
+#include "geometry/design/raster/mip_image.h"
 #include "tests/geometry/design/test_garments.h"
 
 namespace tp::geometry::internal {
