@@ -1,6 +1,6 @@
-// rip/bench/bench_marker.cpp: the benchmark's jobs (stand-in rectangles, the nested sample skirt
+// host/bench/bench_marker.cpp: the benchmark's jobs (stand-in rectangles, the nested sample skirt
 // with its projected design) and the replay source.
-#include "rip/bench/bench_marker.h"
+#include "host/bench/bench_marker.h"
 
 #include <algorithm>
 #include <cmath>

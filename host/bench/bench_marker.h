@@ -1,4 +1,4 @@
-// rip/bench/bench_marker.h: the RIP benchmark's jobs (panels covering the roll, the nested skirt,
+// host/bench/bench_marker.h: the RIP benchmark's jobs (panels covering the roll, the nested skirt,
 // stand-in rectangles) and a replay source that isolates the pipeline after rendering.
 #pragma once
 
@@ -9,9 +9,9 @@
 #include "geometry/common/image.h"
 #include "geometry/design/piece_renderer.h"
 #include "geometry/nesting/marker.h"
+#include "host/bench/textured_piece_renderer.h"
 #include "rip/common/error.h"
 #include "rip/render/band_source.h"
-#include "rip/render/textured_piece_renderer.h"
 
 namespace tp::rip {
 

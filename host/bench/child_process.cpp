@@ -1,5 +1,5 @@
-// rip/bench/child_process.cpp: fork, pipe the child's figures back, wait4 for its resource usage.
-#include "rip/bench/child_process.h"
+// host/bench/child_process.cpp: fork, pipe the child's figures back, wait4 for its resource usage.
+#include "host/bench/child_process.h"
 
 #include <sys/resource.h>
 #include <sys/wait.h>

@@ -1,4 +1,4 @@
-// rip/bench/child_process.h: runs a measurement in a forked child so its peak memory and CPU time are
+// host/bench/child_process.h: runs a measurement in a forked child so its peak memory and CPU time are
 // its own.
 #pragma once
 

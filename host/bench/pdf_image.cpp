@@ -1,5 +1,5 @@
-// rip/bench/pdf_image.cpp: minimal PDF 1.4 writer (catalog, pages, page, content stream, image XObject).
-#include "rip/bench/pdf_image.h"
+// host/bench/pdf_image.cpp: minimal PDF 1.4 writer (catalog, pages, page, content stream, image XObject).
+#include "host/bench/pdf_image.h"
 
 #include <cstdio>
 #include <fstream>

@@ -1,4 +1,4 @@
-// rip/bench/pdf_image.h: a one-page PDF holding one JPEG image, for feeding the same picture to
+// host/bench/pdf_image.h: a one-page PDF holding one JPEG image, for feeding the same picture to
 // Ghostscript.
 #pragma once
 

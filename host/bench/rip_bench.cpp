@@ -1,5 +1,5 @@
-// rip/bench/rip_bench.cpp: the RIP benchmark's measurements, each in a child process.
-#include "rip/bench/rip_bench.h"
+// host/bench/rip_bench.cpp: the RIP benchmark's measurements, each in a child process.
+#include "host/bench/rip_bench.h"
 
 #include <spawn.h>
 #include <sys/resource.h>
@@ -12,8 +12,8 @@
 
 #include <spdlog/fmt/fmt.h>
 
-#include "rip/bench/bench_marker.h"
-#include "rip/bench/pdf_image.h"
+#include "host/bench/bench_marker.h"
+#include "host/bench/pdf_image.h"
 #include "rip/image/image_io.h"
 #include "rip/job/rip_job.h"
 #include "rip/render/image_file_source.h"

@@ -1,4 +1,4 @@
-// rip/bench/rip_bench.h: `printctl bench rip`: RIP throughput, memory against roll length, and the
+// host/bench/rip_bench.h: `printctl bench rip`: RIP throughput, memory against roll length, and the
 // comparison with Ghostscript's tiffsep1 on the same image.
 #pragma once
 
@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "rip/bench/child_process.h"
+#include "host/bench/child_process.h"
 #include "rip/common/error.h"
 
 namespace tp::rip {

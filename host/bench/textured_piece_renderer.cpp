@@ -1,6 +1,6 @@
-// rip/render/textured_piece_renderer.cpp: span-based rendering of textured convex pieces (fixed-point
+// host/bench/textured_piece_renderer.cpp: span-based rendering of textured convex pieces (fixed-point
 // bilinear texture steps along each row, per-pixel coverage only near edges).
-#include "rip/render/textured_piece_renderer.h"
+#include "host/bench/textured_piece_renderer.h"
 
 #include <algorithm>
 #include <cmath>

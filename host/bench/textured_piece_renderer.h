@@ -1,4 +1,4 @@
-// rip/render/textured_piece_renderer.h: a plain PieceRenderer over convex pieces filled with a tiled
+// host/bench/textured_piece_renderer.h: a plain PieceRenderer over convex pieces filled with a tiled
 // image, for benchmarks, tests and tools that have no garment design.
 #pragma once
 

@@ -1,6 +1,6 @@
-// tests/rip/render/textured_piece_renderer_test.cpp: the benchmark's stand-in renderer covers each piece's
+// tests/host/bench/textured_piece_renderer_test.cpp: the benchmark's stand-in renderer covers each piece's
 // area within an edge budget and composites over what is already there.
-#include "rip/render/textured_piece_renderer.h"
+#include "host/bench/textured_piece_renderer.h"
 
 #include <cmath>
 
