@@ -26,8 +26,9 @@ inline constexpr double kDoubleNotchSpacing_mm = 6;
 /// grainline/cutonfold markers; "cut N, mirrored, from <material>" from the part's annotation text.
 /// Darts drawn into the seam line are detected (detect_darts). Cut-on-fold halves are unfolded and
 /// quantities expanded per `options`. Coordinates are turned to y up.
-/// Tolerant of FreeSewing's odd markup (text in <defs>, quoted markup, unclosed tags).
-/// Errors name the file and line: kParse for path data that does not parse; kInvalidPattern
+/// The XML is parsed by pugixml: markup that is not well-formed (unquoted attributes, a stray '<',
+/// unclosed elements) is kParse naming the file, line and byte; unknown entities are kept as written.
+/// Errors name the file and line: kParse for XML or path data that does not parse; kInvalidPattern
 /// when no part has a closed seam line.
 [[nodiscard]] Result<Pattern> read_freesewing_svg(std::string_view text, const std::string& source_name,
                                                   const PatternImportOptions& options = {});

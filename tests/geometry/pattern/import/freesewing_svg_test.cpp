@@ -142,13 +142,16 @@ std::string svg_with(const std::string& body) {
          body + "</g></g></g></svg>";
 }
 
-TEST(FreeSewing, OddButReadableMarkupIsTolerated) {
-  // Unquoted attribute values, an unknown entity, a stray '<' in text, a comment, an unclosed
-  // <text>, and a transform on the seam path.
+TEST(FreeSewing, OddButWellFormedMarkupIsRead) {
+  // What SVG producers emit that a naive reader trips on: a comment, a CDATA section, escaped
+  // '<', an entity XML does not define (kept as written), a <text> split into <tspan>s, a
+  // transform on the seam path, and xlink:href on the notch.
   std::string body =
-      "<!-- seam --><path class=fabric id=fs-1 transform=\"translate(10,0)\" d=\"M0,0 L100,0 L100,50 L0,50 z\" />"
-      "<text>plugin-annotations:cut,2,plugin-annotations:from,plugin-annotations:lining, a < b &nbsp;</text>"
-      "<use x=\"60\" y=\"0\" xlink:href=\"#notch\"></use><text>unclosed";
+      "<!-- seam --><path class='fabric' id=\"fs-1\" transform=\"translate(10,0)\" d=\"M0,0 L100,0 L100,50 L0,50 z\" />"
+      "<text><tspan>plugin-annotations:cut,2,plugin-annotations:from,</tspan><tspan>plugin-annotations:lining, a &lt; "
+      "b "
+      "&nbsp;</tspan><![CDATA[ <raw> ]]></text>"
+      "<use x=\"60\" y=\"0\" xlink:href=\"#notch\"></use><text>closed</text>";
   auto r = read_freesewing_svg(svg_with(body), "odd.svg");
   ASSERT_TRUE(r.has_value()) << r.error().what();
   ASSERT_EQ(r->pieces.size(), 2u);
@@ -158,6 +161,20 @@ TEST(FreeSewing, OddButReadableMarkupIsTolerated) {
   EXPECT_NEAR(box.min.x, 10, 1e-9);
   EXPECT_NEAR(box.min.y, -50, 1e-9);
   ASSERT_EQ(r->pieces[0].notches.size(), 1u);
+}
+
+TEST(FreeSewing, MarkupThatIsNotXmlNamesFileLineAndByte) {
+  // Unquoted attribute values, a stray '<' in text and an unclosed element are not XML: the
+  // importer says where instead of guessing what was meant.
+  for (const std::string& body :
+       {std::string("\n\n<path class=fabric d=\"M0,0 L1,0 L0,1 z\" />"), std::string("\n\n<text>a < b</text>"),
+        std::string("\n<path class=\"fabric\" d=\"M0,0 L1,0 L0,1 z\" />\n<text>unclosed")}) {
+    auto r = read_freesewing_svg(svg_with(body), "odd.svg");
+    ASSERT_FALSE(r.has_value()) << body;
+    EXPECT_EQ(r.error().code, ErrorCode::kParse);
+    EXPECT_NE(r.error().message.find("odd.svg:3: not well-formed XML: "), std::string::npos) << r.error().message;
+    EXPECT_NE(r.error().message.find(" (byte "), std::string::npos) << r.error().message;
+  }
 }
 
 TEST(FreeSewing, BadPathDataNamesFileLineAndPath) {
