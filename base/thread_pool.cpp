@@ -1,9 +1,9 @@
-// rip/common/thread_pool.cpp: the rip layer's worker pool (one per job, threads reused across bands).
-#include "rip/common/internal/thread_pool.h"
+// base/thread_pool.cpp: the worker pool (threads made once, reused across loops).
+#include "base/thread_pool.h"
 
 #include <algorithm>
 
-namespace tp::rip {
+namespace tp {
 
 ThreadPool::ThreadPool(int threads) {
   if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
@@ -63,4 +63,4 @@ void ThreadPool::parallel_for(int count, const std::function<void(int, int)>& fn
   task_ = nullptr;
 }
 
-}  // namespace tp::rip
+}  // namespace tp

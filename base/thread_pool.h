@@ -1,14 +1,15 @@
-// rip/common/internal/thread_pool.h: a fixed pool of worker threads running index-parallel loops.
+// base/thread_pool.h: a fixed pool of worker threads running index-parallel loops, for every layer.
 #pragma once
 
 #include <atomic>
 #include <condition_variable>
+#include <cstdint>
 #include <functional>
 #include <mutex>
 #include <thread>
 #include <vector>
 
-namespace tp::rip {
+namespace tp {
 
 /// `threads` workers (the calling thread counts as worker 0) that run parallel_for loops. Work is
 /// handed out by index, so which worker runs an index never affects results that are written by
@@ -42,4 +43,4 @@ class ThreadPool {
   bool stop_ = false;
 };
 
-}  // namespace tp::rip
+}  // namespace tp
