@@ -9,6 +9,8 @@
 #include <cmath>
 #if defined(__SSE2__)
 #include <emmintrin.h>
+
+#include "geometry/common/tolerances.h"
 #endif
 
 namespace tp::geometry::internal {
@@ -150,8 +152,8 @@ SpanFilter choose_filter(const MipImage& image, double du_dx, double dv_dx, doub
   const double phi = 0.5 * (std::atan2(h, e) + std::atan2(g, f));
   int taps = 1;
   if (max_taps > 1) {
-    const double ratio = major / std::max(minor, 1e-9);
-    taps = static_cast<int>(std::clamp(std::ceil(ratio - 1e-9), 1.0, static_cast<double>(max_taps)));
+    const double ratio = major / std::max(minor, kMinDivisor);
+    taps = static_cast<int>(std::clamp(std::ceil(ratio - kCeilSlack), 1.0, static_cast<double>(max_taps)));
   }
   const double lod = std::log2(major / taps);
   if (lod > 0) {

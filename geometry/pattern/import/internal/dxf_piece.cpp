@@ -9,6 +9,7 @@
 #include <numbers>
 
 #include "geometry/common/aama_layers.h"
+#include "geometry/common/tolerances.h"
 #include "geometry/pattern/curve.h"
 #include "geometry/pattern/darts.h"
 #include "geometry/pattern/import/dxf_aama.h"
@@ -260,7 +261,7 @@ Projection cross_outline(const Piece& piece, Vec2 a, Vec2 b) {
       Vec2 s = pts[i] - pts[i - 1];
       double len = norm(s);
       double den = cross(d, s);
-      if (len > 0 && std::abs(den) > 1e-12 * norm(d) * len) {
+      if (len > 0 && std::abs(den) > kParallelDeterminant * norm(d) * len) {
         double u = cross(pts[i - 1] - a, d) / den;  // along the outline segment
         if (u >= 0 && u <= 1) {
           Vec2 x = pts[i - 1] + s * u;
