@@ -13,6 +13,7 @@
 #include "geometry/pattern/curve.h"
 #include "geometry/pattern/darts.h"
 #include "geometry/pattern/import/dxf_aama.h"
+#include "geometry/pattern/import/internal/outline_projection.h"
 #include "geometry/pattern/internal/text.h"
 #include "geometry/pattern/internal/try.h"
 #include "geometry/pattern/orient.h"
@@ -222,31 +223,6 @@ std::vector<Polyline> loops_of(const std::vector<Polyline>& curves) {
 }
 
 double loop_area(const Polyline& p, double tol) { return signed_area(flattened(p, tol)); }
-
-struct Projection {
-  int edge = -1;
-  double position_mm = 0;
-  double distance_mm = std::numeric_limits<double>::infinity();
-};
-
-Projection project(const Piece& piece, Vec2 at) {
-  Projection best;
-  for (int e = 0; e < static_cast<int>(piece.edges.size()); ++e) {
-    const auto& pts = piece.edges[e].points_mm;
-    double acc = 0;
-    for (size_t i = 1; i < pts.size(); ++i) {
-      Vec2 ab = pts[i] - pts[i - 1];
-      double len = norm(ab);
-      double t = len > 0 ? std::clamp(dot(at - pts[i - 1], ab) / (len * len), 0.0, 1.0) : 0;
-      double d = norm(at - (pts[i - 1] + ab * t));
-      if (d < best.distance_mm) best = Projection{e, acc + t * len, d};
-      acc += len;
-    }
-  }
-  return best;
-}
-
-double distance_to_line(Vec2 x, Vec2 p, Vec2 q) { return std::abs(cross(normalized(q - p), x - p)); }
 
 /// Where the line through a and b (a notch line, drawn square to the cut line) crosses the
 /// outline nearest to a or b; distance_mm is from that end. Projection{} when it never does.

@@ -10,6 +10,7 @@
 #include "geometry/pattern/curve.h"
 #include "geometry/pattern/darts.h"
 #include "geometry/pattern/import/freesewing_svg.h"
+#include "geometry/pattern/import/internal/outline_projection.h"
 #include "geometry/pattern/import/internal/svg_part.h"
 #include "geometry/pattern/import/svg_path.h"
 #include "geometry/pattern/internal/text.h"
@@ -81,32 +82,6 @@ Result<std::vector<Vec2>> subpath_points(const SvgSubpath& sp, const Affine2& m,
   std::vector<Vec2> pts{m.apply(sp.start)};
   for (const OutlineSegment& s : segs) pts.insert(pts.end(), s.edge.points_mm.begin() + 1, s.edge.points_mm.end());
   return pts;
-}
-
-double distance_to_line(Vec2 x, Vec2 p, Vec2 q) { return std::abs(cross(normalized(q - p), x - p)); }
-
-/// Closest point of the outline to `at`: (edge, arc length along it, distance).
-struct Projection {
-  int edge = -1;
-  double position_mm = 0;
-  double distance_mm = std::numeric_limits<double>::infinity();
-};
-
-Projection project(const Piece& piece, Vec2 at) {
-  Projection best;
-  for (int e = 0; e < static_cast<int>(piece.edges.size()); ++e) {
-    const auto& pts = piece.edges[e].points_mm;
-    double acc = 0;
-    for (size_t i = 1; i < pts.size(); ++i) {
-      Vec2 ab = pts[i] - pts[i - 1];
-      double len = norm(ab);
-      double t = len > 0 ? std::clamp(dot(at - pts[i - 1], ab) / (len * len), 0.0, 1.0) : 0;
-      double d = norm(at - (pts[i - 1] + ab * t));
-      if (d < best.distance_mm) best = Projection{e, acc + t * len, d};
-      acc += len;
-    }
-  }
-  return best;
 }
 
 /// "cut,2,...:mirrored,...:from,...:fabric" -> quantity, mirrored pairs, material.
