@@ -27,6 +27,7 @@ TP_PACKAGES=(
   libcpp-httplib-dev libssl-dev openssl  # printd's HTTP API (TLS via OpenSSL); the tests make a cert
   libfreetype-dev libharfbuzz-dev fonts-dejavu-core  # text design layers (FreeType, HarfBuzz, DejaVu)
   systemd dpkg-dev wrk  # systemd-analyze verify and dpkg-shlibdeps for the .deb test; HTTP load figures
+  libpugixml-dev  # the FreeSewing SVG importer's XML parser
 )
 
 tp_log() { printf '\033[1m==> %s\033[0m\n' "$*" >&2; }

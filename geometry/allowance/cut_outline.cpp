@@ -12,6 +12,8 @@
 #include <optional>
 #include <string>
 
+#include "geometry/common/tolerances.h"
+
 namespace tp::geometry {
 namespace {
 
@@ -45,7 +47,7 @@ void add_region(std::vector<CPolygon>& out, std::initializer_list<Vec2> pts) {
 // Intersection of lines p + t*d and q + s*e; none when parallel.
 std::optional<Vec2> line_intersection(Vec2 p, Vec2 d, Vec2 q, Vec2 e) {
   const double den = cross(d, e);
-  if (std::abs(den) < 1e-12) return std::nullopt;
+  if (std::abs(den) < kParallelDeterminant) return std::nullopt;
   const double t = cross(q - p, e) / den;
   return p + d * t;
 }

@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "geometry/allowance/stroke_font.h"
+#include "geometry/common/tolerances.h"
 
 namespace tp::geometry {
 namespace {
@@ -134,7 +135,7 @@ PieceMarks piece_marks(const Piece& piece, const PieceAllowance& allowance, cons
   std::stable_sort(by_length.begin(), by_length.end(), [](const Run* a, const Run* b) { return a->length > b->length; });
   std::optional<Run> label_run;
   for (const std::string& text : texts) {
-    for (double h = f.label_height_mm; h >= kMinLabel_mm - 1e-9 && !label_run; h *= 0.8) {
+    for (double h = f.label_height_mm; h >= kMinLabel_mm - kBoundarySlack && !label_run; h *= 0.8) {
       const double tw = text_width_mm(text, h);
       const double half_stroke = 0.5 * std::max(0.25, h / 10);
       // The longest run that holds the text, checked against the real (curved) seam line.
@@ -179,7 +180,7 @@ PieceMarks piece_marks(const Piece& piece, const PieceAllowance& allowance, cons
     double len = std::min(kMaxArrow_mm, 0.4 * r.length);
     if (s > 1e-6) len = std::min(len, room / s);
     Vec2 centre = r.start + r.dir * (0.5 * r.length) + n * (0.5 * r.width);
-    const bool shared = r.edge == label_run->edge && norm(r.start - label_run->start) < 1e-9;
+    const bool shared = r.edge == label_run->edge && norm(r.start - label_run->start) < kSamePoint_mm;
     if (shared) {
       // Beside the label, in the free part of the run before it.
       const double free = 0.5 * (r.length - text_width_mm(out.text, f.label_height_mm)) - 2 * kMargin_mm;

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 
+#include "geometry/common/tolerances.h"
+
 namespace tp::geometry {
 namespace {
 
@@ -22,10 +24,11 @@ Vec2 ray_hit(const Polygon& poly, Vec2 p, Vec2 d) {
     const Vec2 a = poly[i], b = poly[(i + 1) % poly.size()];
     const Vec2 e = b - a;
     const double den = cross(d, e);
-    if (std::abs(den) < 1e-12) continue;
+    if (std::abs(den) < kParallelDeterminant) continue;
     const double t = cross(a - p, e) / den;
     const double u = cross(a - p, d) / den;
-    if (t >= -1e-9 && u >= -1e-9 && u <= 1 + 1e-9) best = std::min(best, std::max(0.0, t));
+    if (t >= -kBoundarySlack && u >= -kBoundarySlack && u <= 1 + kBoundarySlack)
+      best = std::min(best, std::max(0.0, t));
   }
   return std::isfinite(best) ? p + d * best : p;
 }

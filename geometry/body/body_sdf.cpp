@@ -3,8 +3,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <thread>
 #include <unordered_map>
+
+#include "base/thread_pool.h"
 
 namespace tp::geometry {
 namespace {
@@ -143,10 +144,9 @@ Result<BodySdf> BodySdf::build(BodyMesh body, double spacing_mm, int band_cells)
     }
   };
   {
-    int mid = s.nz_ / 2;
-    std::thread other(band_pass, mid, s.nz_);
-    band_pass(0, mid);
-    other.join();
+    const int mid = s.nz_ / 2;
+    ThreadPool pool(2);
+    pool.parallel_for(2, [&](int slab, int) { slab == 0 ? band_pass(0, mid) : band_pass(mid, s.nz_); });
   }
 
   // Inside flags: winding number along +z rays through each (x, y) column. Columns are shifted

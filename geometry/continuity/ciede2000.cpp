@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "base/srgb.h"
+
 namespace tp::geometry {
 namespace {
 
@@ -11,8 +13,6 @@ constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr double k25Pow7 = 6103515625.0;  // 25^7
 // D65 reference white of sRGB (Y = 1).
 constexpr double kXn = 0.95047, kYn = 1.0, kZn = 1.08883;
-
-double to_linear(double c) { return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4); }
 
 double lab_f(double t) {
   constexpr double e = 216.0 / 24389.0, k = 24389.0 / 27.0;
@@ -31,9 +31,9 @@ double hue_deg(double b, double a) {
 Lab srgb_over_white_to_lab(Rgba8 p) {
   const double alpha = p.a / 255.0;
   // Compositing over white happens in linear light, as ink on white fabric mixes light.
-  const double r = to_linear(p.r / 255.0) * alpha + (1 - alpha);
-  const double g = to_linear(p.g / 255.0) * alpha + (1 - alpha);
-  const double b = to_linear(p.b / 255.0) * alpha + (1 - alpha);
+  const double r = srgb_to_linear(p.r / 255.0) * alpha + (1 - alpha);
+  const double g = srgb_to_linear(p.g / 255.0) * alpha + (1 - alpha);
+  const double b = srgb_to_linear(p.b / 255.0) * alpha + (1 - alpha);
   const double x = 0.4124564 * r + 0.3575761 * g + 0.1804375 * b;
   const double y = 0.2126729 * r + 0.7151522 * g + 0.0721750 * b;
   const double z = 0.0193339 * r + 0.1191920 * g + 0.9503041 * b;

@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <limits>
 
+#include "geometry/common/tolerances.h"
+
 namespace tp::geometry {
 namespace {
 
@@ -19,7 +21,7 @@ Circle from2(Vec2 a, Vec2 b) { return {(a + b) * 0.5, norm(a - b) * 0.5}; }
 
 Circle from3(Vec2 a, Vec2 b, Vec2 c) {
   const double d = 2 * (a.x * (b.y - c.y) + b.x * (c.y - a.y) + c.x * (a.y - b.y));
-  if (std::abs(d) < 1e-12) {
+  if (std::abs(d) < kParallelDeterminant) {
     // Collinear: the widest pair spans the circle.
     Circle best = from2(a, b);
     for (Circle k : {from2(a, c), from2(b, c)})

@@ -3,20 +3,19 @@
 #include "geometry/design/make_piece_renderer.h"
 
 #include <algorithm>
-#include <atomic>
 #include <mutex>
-#include <thread>
 
+#include "base/thread_pool.h"
 #include "geometry/allowance/allowance_widths.h"
 #include "geometry/allowance/cut_outline.h"
 #include "geometry/design/internal/allowance_source.h"
 #include "geometry/design/internal/band_mesh.h"
 #include "geometry/design/internal/closest_point.h"
 #include "geometry/design/internal/garment_surface.h"
-#include "geometry/design/internal/mip_image.h"
 #include "geometry/design/internal/piece_marks.h"
 #include "geometry/design/internal/render_builder.h"
-#include "geometry/design/internal/render_window.h"
+#include "geometry/design/raster/mip_image.h"
+#include "geometry/design/raster/render_window.h"
 #include "geometry/design/validate_design.h"
 
 namespace tp::geometry {
@@ -110,54 +109,50 @@ Result<std::unique_ptr<PieceRenderer>> make_piece_renderer(const Pattern& patter
   ctx.blank_band = !finishing.textured_allowance;
 
   // Pieces are independent: build them on a few threads, keep the first error.
-  std::atomic<int> next{0};
   std::mutex error_mutex;
   std::optional<Error> first_error;
-  auto work = [&] {
-    for (int p = next++; p < n; p = next++) {
-      if (cancel && cancel->cancelled()) {
-        std::lock_guard lock(error_mutex);
-        if (!first_error) first_error = Error{ErrorCode::kCancelled, "renderer build cancelled"};
-        return;
-      }
-      const Piece& piece = pattern.pieces[static_cast<size_t>(p)];
-      auto allowance = resolve_allowance(pattern, p, finishing);
-      Result<Polygon> cut = allowance ? cut_outline(piece, *allowance, finishing.mitre_limit) : std::unexpected(allowance.error());
-      const Polygon mesh_loop = loop_polygon(*r->surface_, p);
-      std::vector<std::vector<Vec2>> edges;
-      for (const Edge& e : piece.edges) edges.push_back(e.points_mm);
-      // The band reaches the cut line everywhere and at least the mesh boundary (whose chords
-      // may bulge past a curved seam line where an edge has no allowance).
-      Result<Polygon> outer = cut ? cut_outline(edges, allowance->width_mm, allowance->corner, finishing.mitre_limit, &mesh_loop)
-                                  : std::unexpected(cut.error());
-      if (!outer) {
-        std::lock_guard lock(error_mutex);
-        if (!first_error) first_error = outer.error().with_context("piece '" + piece.name + "'");
-        continue;
-      }
-      PieceData& pd = r->pieces_[static_cast<size_t>(p)];
-      r->cut_[static_cast<size_t>(p)] = *cut;
-      pd.cut_outline = *cut;
-      // Band triangles about as long as the seam segments they face.
-      double seg = 0;
-      for (size_t i = 0; i < mesh_loop.size(); ++i) seg += norm(mesh_loop[(i + 1) % mesh_loop.size()] - mesh_loop[i]);
-      const double spacing = std::clamp(seg / std::max<size_t>(1, mesh_loop.size()), 2.0, 20.0);
-      // Break lines long enough to cross the widest allowance along a sharp corner's mitre.
-      const double widest = *std::max_element(allowance->width_mm.begin(), allowance->width_mm.end());
-      const auto band = triangulate_band(mesh_loop, *outer, spacing, r->allowance_->source_breaks(p, 4 * widest + 5));
-      build_piece_triangles(p, band, ctx, pd);
-      if (finishing.marks == MarkMode::kPrinted) {
-        pd.marks = printed_marks(pattern, p, *allowance, finishing);
-        pd.mark_colour = premultiply(finishing.mark_colour);
-      }
-      build_grid(pd);
+  auto work = [&](int p) {
+    if (cancel && cancel->cancelled()) {
+      std::lock_guard lock(error_mutex);
+      if (!first_error) first_error = Error{ErrorCode::kCancelled, "renderer build cancelled"};
+      return;
     }
+    const Piece& piece = pattern.pieces[static_cast<size_t>(p)];
+    auto allowance = resolve_allowance(pattern, p, finishing);
+    Result<Polygon> cut =
+        allowance ? cut_outline(piece, *allowance, finishing.mitre_limit) : std::unexpected(allowance.error());
+    const Polygon mesh_loop = loop_polygon(*r->surface_, p);
+    std::vector<std::vector<Vec2>> edges;
+    for (const Edge& e : piece.edges) edges.push_back(e.points_mm);
+    // The band reaches the cut line everywhere and at least the mesh boundary (whose chords
+    // may bulge past a curved seam line where an edge has no allowance).
+    Result<Polygon> outer =
+        cut ? cut_outline(edges, allowance->width_mm, allowance->corner, finishing.mitre_limit, &mesh_loop)
+            : std::unexpected(cut.error());
+    if (!outer) {
+      std::lock_guard lock(error_mutex);
+      if (!first_error) first_error = outer.error().with_context("piece '" + piece.name + "'");
+      return;
+    }
+    PieceData& pd = r->pieces_[static_cast<size_t>(p)];
+    r->cut_[static_cast<size_t>(p)] = *cut;
+    pd.cut_outline = *cut;
+    // Band triangles about as long as the seam segments they face.
+    double seg = 0;
+    for (size_t i = 0; i < mesh_loop.size(); ++i) seg += norm(mesh_loop[(i + 1) % mesh_loop.size()] - mesh_loop[i]);
+    const double spacing = std::clamp(seg / std::max<size_t>(1, mesh_loop.size()), 2.0, 20.0);
+    // Break lines long enough to cross the widest allowance along a sharp corner's mitre.
+    const double widest = *std::max_element(allowance->width_mm.begin(), allowance->width_mm.end());
+    const auto band = triangulate_band(mesh_loop, *outer, spacing, r->allowance_->source_breaks(p, 4 * widest + 5));
+    build_piece_triangles(p, band, ctx, pd);
+    if (finishing.marks == MarkMode::kPrinted) {
+      pd.marks = printed_marks(pattern, p, *allowance, finishing);
+      pd.mark_colour = premultiply(finishing.mark_colour);
+    }
+    build_grid(pd);
   };
-  const int threads = std::clamp(options.build_threads, 1, std::max(1, n));
-  std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t) pool.emplace_back(work);
-  work();
-  for (auto& t : pool) t.join();
+  ThreadPool pool(std::clamp(options.build_threads, 1, std::max(1, n)));
+  pool.parallel_for(n, [&](int p, int) { work(p); });
   if (first_error) return std::unexpected(*first_error);
   return std::unique_ptr<PieceRenderer>(std::move(r));
 }

@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "geometry/pattern/internal/obj_mesh.h"
+#include "geometry/pattern/import/internal/obj_mesh.h"
 #include "geometry/pattern/internal/read_file.h"
 
 namespace tp::geometry {

@@ -6,6 +6,8 @@
 #include <numeric>
 #include <string>
 
+#include "geometry/common/tolerances.h"
+
 namespace tp::geometry {
 namespace {
 
@@ -96,7 +98,7 @@ Result<BoundarySampling> sample_boundary(const Pattern& pattern, double target_e
   std::vector<int> group_n(nodes.size(), 1);
   for (size_t i = 0; i < nodes.size(); ++i) {
     int r = find_root(parent, static_cast<int>(i));
-    int n = static_cast<int>(std::ceil((nodes[i].to_mm - nodes[i].from_mm) / target_edge_mm - 1e-9));
+    int n = static_cast<int>(std::ceil((nodes[i].to_mm - nodes[i].from_mm) / target_edge_mm - kCeilSlack));
     group_n[r] = std::max(group_n[r], std::max(n, 1));
   }
 
@@ -142,7 +144,7 @@ Result<BoundarySampling> sample_boundary(const Pattern& pattern, double target_e
           }
         }
         int n = covering >= 0 ? group_n[find_root(parent, covering)]
-                              : std::max(1, static_cast<int>(std::ceil((s1 - s0) / target_edge_mm - 1e-9)));
+                              : std::max(1, static_cast<int>(std::ceil((s1 - s0) / target_edge_mm - kCeilSlack)));
         if (covering >= 0)
           for (int i : here)
             if (find_root(parent, i) == find_root(parent, covering) && std::abs(nodes[i].from_mm - s0) < kBreakpointTolMm) {

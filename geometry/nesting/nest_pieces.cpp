@@ -1,5 +1,5 @@
-// geometry/nesting/nest_pieces.cpp: pieces to strip items (grain, mirror, pairs), the roll/strip
-// frame change, and the split into markers of bounded length.
+// geometry/nesting/nest_pieces.cpp: pieces to strip items (grain, mirror, pairs) through the
+// strip frame (internal/strip_frame.h), and the split into markers of bounded length.
 #include "geometry/nesting/nest_pieces.h"
 
 #include <algorithm>
@@ -8,36 +8,19 @@
 #include <numbers>
 #include <string>
 
+#include "geometry/nesting/internal/strip_frame.h"
 #include "geometry/nesting/strip_nester.h"
 
 namespace tp::geometry {
 namespace {
 
-// Angles this close to a whole number of degrees are snapped to it (grain lines drawn at 90
-// degrees come out of atan2 with rounding noise).
-constexpr double kAngleSnapDeg = 1e-9;
 // Expected utilisation when estimating how many markers a job needs (only splits the time).
 constexpr double kPlanningUtilisation = 0.8;
 
-// The strip engine runs along x with the width along y; the roll has x across and y along.
-// Swapping the axes maps one frame to the other (it is its own inverse).
-Vec2 swap_xy(Vec2 v) { return {v.y, v.x}; }
+using nesting::normalise_deg;
 
 // Piece y up to roll y down (PiecePlacement::piece_to_roll starts with it).
 Vec2 face_up(Vec2 v) { return {v.x, -v.y}; }
-
-double normalise_deg(double d) {
-  d = std::fmod(d, 360.0);
-  if (d < 0) d += 360.0;
-  const double r = std::round(d);
-  if (std::fabs(d - r) < kAngleSnapDeg) d = r;
-  return d >= 360.0 ? d - 360.0 : d;
-}
-
-// Roll pose (theta, mirror) to strip pose: the axis swap turns theta into -theta, and a mirror
-// of piece x into a mirror of strip x followed by a half turn (see docs/nesting.md).
-double roll_to_strip_deg(double roll_deg, bool mirror) { return normalise_deg(mirror ? 180.0 - roll_deg : -roll_deg); }
-double strip_to_roll_deg(double strip_deg, bool mirror) { return normalise_deg(mirror ? 180.0 - strip_deg : -strip_deg); }
 
 Status check(const std::vector<NestItem>& items, const NestOptions& o) {
   auto bad = [](const std::string& m) { return fail(ErrorCode::kInvalidArgument, "nesting: " + m); };
@@ -63,7 +46,7 @@ struct ItemOrigin {
 void add_strip_items(const NestItem& it, size_t index, std::vector<StripItem>& out, std::vector<ItemOrigin>& origin) {
   Polygon shape;
   shape.reserve(it.outline_mm.size());
-  for (Vec2 v : it.outline_mm) shape.push_back(swap_xy(face_up(v)));
+  for (Vec2 v : it.outline_mm) shape.push_back(nesting::piece_to_strip_item(v));
   auto make = [&](std::vector<bool> mirrors, int demand) {
     StripItem s;
     s.id = static_cast<int>(out.size());
@@ -73,7 +56,8 @@ void add_strip_items(const NestItem& it, size_t index, std::vector<StripItem>& o
     s.poses.clear();
     s.free_rotation = it.rotation == PieceRotation::kFree;
     for (bool m : mirrors)
-      for (double deg : grain_rotations_deg(it.grain, it.rotation, m)) s.poses.push_back({roll_to_strip_deg(deg, m), m});
+      for (double deg : grain_rotations_deg(it.grain, it.rotation, m))
+        s.poses.push_back({nesting::roll_to_strip_deg(deg, m), m});
     out.push_back(std::move(s));
     origin.push_back({index});
   };
@@ -137,7 +121,7 @@ Result<std::vector<Marker>> nest_pieces(const std::vector<NestItem>& items, cons
     // Defects in this marker's frame: roll y measured from the marker start becomes strip x.
     for (const Polygon& d : options.defects_mm) {
       Polygon local;
-      for (Vec2 v : d) local.push_back(swap_xy(Vec2{v.x, v.y - roll_y}));
+      for (Vec2 v : d) local.push_back(nesting::roll_to_strip(Vec2{v.x, v.y - roll_y}));
       const Box2 b = bounds(local);
       if (b.max.x < 0 || (options.max_length_mm > 0 && b.min.x > options.max_length_mm)) continue;
       problem.hazards.push_back(std::move(local));
@@ -189,12 +173,7 @@ Result<std::vector<Marker>> nest_pieces(const std::vector<NestItem>& items, cons
       const NestItem& it = items[origin[si].nest_item];
       --remaining[si];
       area += std::fabs(signed_area(strip_items[si].shape));
-      PiecePlacement pp;
-      pp.piece = it.piece;
-      pp.mirrored = p.mirror;
-      pp.rotation_deg = strip_to_roll_deg(p.rotation_deg, p.mirror);
-      pp.offset_mm = swap_xy(p.translation);
-      m.placements.push_back(pp);
+      m.placements.push_back(nesting::strip_to_roll_placement(p, it.piece));
     }
     m.length_mm = solved->length + tail;
     m.utilisation = area / (m.width_mm * m.length_mm);

@@ -189,7 +189,7 @@ Result<StripSolution> nest_strip(const StripProblem& problem, const StripOptions
   std::uint64_t work = 0;
   const bool any_placed = static_cast<int>(unplaced.size()) < layout.size();
   if (options.improve && any_placed && layout.size() > 1) {
-    ThreadTeam team(options.threads);
+    ThreadPool team(std::max(1, options.threads));
     Separator sep(options.workers, &team);
     StripSearchConfig cfg;
     const double area_total = [&] {

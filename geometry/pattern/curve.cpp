@@ -5,6 +5,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "geometry/common/tolerances.h"
+
 namespace tp::geometry {
 namespace {
 
@@ -62,7 +64,7 @@ Status flatten_arc(Vec2 a, Vec2 b, Vec2 centre, Vec2 mid, double tol, std::vecto
   double sweep = arc_sweep(centre, a, mid, b);
   // Segment angle so that the sagitta r(1-cos(step/2)) stays within the tolerance.
   double step = 2 * std::acos(std::clamp(1 - tol / r, -1.0, 1.0));
-  double n_real = std::ceil(std::abs(sweep) / std::max(step, 1e-9));
+  double n_real = std::ceil(std::abs(sweep) / std::max(step, kMinDivisor));
   if (!(n_real < static_cast<double>(kMaxEdgePoints)))
     return fail(ErrorCode::kInvalidPattern, "arc needs more than " + std::to_string(kMaxEdgePoints) + " points");
   int n = std::max(1, static_cast<int>(n_real));
@@ -153,7 +155,7 @@ std::optional<Vec2> circle_centre(Vec2 a, Vec2 b, Vec2 c) {
   Vec2 ab = b - a, ac = c - a;
   double d = 2 * cross(ab, ac);
   double scale = std::max(dot(ab, ab), dot(ac, ac));
-  if (!(std::abs(d) > 1e-12 * scale) || !std::isfinite(d)) return std::nullopt;
+  if (!(std::abs(d) > kParallelDeterminant * scale) || !std::isfinite(d)) return std::nullopt;
   double ab2 = dot(ab, ab), ac2 = dot(ac, ac);
   Vec2 rel{(ac.y * ab2 - ab.y * ac2) / d, (ab.x * ac2 - ac.x * ab2) / d};
   Vec2 centre = a + rel;
@@ -216,7 +218,7 @@ Edge joined_edges(const Edge& a, const Edge& b) {
     return r;
   }
   Vec2 s = a.points_mm.front(), j = a.points_mm.back(), e = b.points_mm.back();
-  double size = std::max({norm(j - s), norm(e - j), 1e-9});
+  double size = std::max({norm(j - s), norm(e - j), kMinDivisor});
   // Two collinear lines pointing the same way stay one line.
   if (a.curve == EdgeCurve::kLine && b.curve == EdgeCurve::kLine &&
       std::abs(cross(j - s, e - j)) <= kSameCircleRelTolerance * size * size && dot(j - s, e - j) > 0) {

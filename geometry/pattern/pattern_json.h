@@ -6,7 +6,7 @@
 #include <string_view>
 
 #include "geometry/common/error.h"
-#include "geometry/pattern/import_options.h"
+#include "geometry/pattern/import/import_options.h"
 #include "geometry/pattern/pattern.h"
 
 namespace tp::geometry {

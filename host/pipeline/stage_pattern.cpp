@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "geometry/pattern/load_pattern.h"
-#include "geometry/pattern/obj_garment.h"
+#include "geometry/pattern/import/load_pattern.h"
+#include "geometry/pattern/import/obj_garment.h"
 #include "geometry/pattern/stitches_json.h"
 #include "geometry/pattern/suggest_stitches.h"
 #include "geometry/pattern/validate.h"

@@ -10,6 +10,7 @@
 #include <lcms2.h>
 #include <spdlog/fmt/fmt.h>
 
+#include "base/srgb.h"
 #include "rip/colour/internal/lcms_handles.h"
 #include "rip/common/internal/log.h"
 #include "rip/image/internal/preflight.h"
@@ -50,12 +51,6 @@ struct Layout {
   bool linear = false;     ///< scene-linear data (EXR): sRGB-encode it
   bool read_float = false;
 };
-
-float srgb_encode(float linear) {
-  if (!(linear > 0.0f)) return 0.0f;
-  if (linear >= 1.0f) return 1.0f;
-  return linear <= 0.0031308f ? 12.92f * linear : 1.055f * std::pow(linear, 1.0f / 2.4f) - 0.055f;
-}
 
 std::uint16_t to_u16(float v) {
   v = std::clamp(v, 0.0f, 1.0f);
@@ -228,7 +223,7 @@ struct ScanlineReader::Impl {
         const float inv = lay.associated_alpha && a > 0 ? 1.0f / a : 1.0f;
         for (int c = 0; c < nc; ++c) {
           const float v = p[lay.colour_index[c]] * inv;
-          colour16[static_cast<size_t>(i) * nc + c] = to_u16(lay.linear ? srgb_encode(v) : v);
+          colour16[static_cast<size_t>(i) * nc + c] = to_u16(lay.linear ? linear_to_srgb(v) : v);
         }
         if (!alpha16.empty()) alpha16[static_cast<size_t>(i)] = to_u16(a);
       } else {

@@ -9,8 +9,8 @@
 
 #include "device/swath/packbits.h"
 
+#include "base/thread_pool.h"
 #include "rip/common/internal/log.h"
-#include "rip/common/internal/thread_pool.h"
 #include "rip/job/internal/band_stage.h"
 #include "rip/job/internal/screened_window.h"
 #include "rip/job/internal/separation_output.h"

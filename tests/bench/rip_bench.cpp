@@ -5,7 +5,7 @@
 #include <random>
 
 #include "device/swath/packbits.h"
-#include "rip/bench/bench_marker.h"
+#include "host/bench/bench_marker.h"
 #include "rip/colour/ink_converter.h"
 #include "rip/render/marker_source.h"
 #include "rip/screen/screen.h"

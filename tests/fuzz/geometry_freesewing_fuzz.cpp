@@ -3,7 +3,7 @@
 #include <cstdint>
 #include <string_view>
 
-#include "geometry/pattern/freesewing_svg.h"
+#include "geometry/pattern/import/freesewing_svg.h"
 #include "geometry/pattern/validate.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -3,7 +3,7 @@
 #include <cstdint>
 #include <string_view>
 
-#include "geometry/pattern/garmentcode.h"
+#include "geometry/pattern/import/garmentcode.h"
 #include "geometry/pattern/validate.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

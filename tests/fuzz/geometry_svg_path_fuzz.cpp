@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <string_view>
 
-#include "geometry/pattern/svg_path.h"
+#include "geometry/pattern/import/svg_path.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   std::string_view text(reinterpret_cast<const char*>(data), size);

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <limits>
 
+#include "geometry/common/tolerances.h"
+
 namespace tp::geometry::internal {
 namespace {
 
@@ -41,7 +43,7 @@ DepthMap::DepthMap(const PlanarField& field, const GarmentSurface& surface, doub
     for (Vec3 p : {a, b, c})
       splat(static_cast<int>(std::floor((p.x - origin_.x) / cell_mm_)), static_cast<int>(std::floor((p.y - origin_.y) / cell_mm_)), p.z);
     const double det = (b.x - a.x) * (c.y - a.y) - (c.x - a.x) * (b.y - a.y);
-    if (std::abs(det) < 1e-12) continue;
+    if (std::abs(det) < kParallelDeterminant) continue;
     const double x0 = std::min({a.x, b.x, c.x}), x1 = std::max({a.x, b.x, c.x});
     const double y0 = std::min({a.y, b.y, c.y}), y1 = std::max({a.y, b.y, c.y});
     const int ix0 = static_cast<int>(std::floor((x0 - origin_.x) / cell_mm_)), ix1 = static_cast<int>(std::floor((x1 - origin_.x) / cell_mm_));
@@ -89,7 +91,7 @@ DepthMap::Coverage DepthMap::classify(const std::array<Vec3, 3>& t) const {
     for (int ix = ix0; ix <= ix1; ++ix) {
       const double px = origin_.x + (ix + 0.5) * cell_mm_, py = origin_.y + (iy + 0.5) * cell_mm_;
       double z;
-      if (std::abs(det) < 1e-12) {
+      if (std::abs(det) < kParallelDeterminant) {
         z = std::min({a.z, b.z, c.z});
       } else {
         // The triangle's plane extended over the margin cells (conservative near its edges).

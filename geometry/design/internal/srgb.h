@@ -1,23 +1,16 @@
-// geometry/design/internal/srgb.h: sRGB transfer curve tables for filtering in linear light.
+// geometry/design/internal/srgb.h: 8-bit sRGB tables (over base/srgb.h's curve) for filtering in linear light.
 #pragma once
 
 #include <array>
 #include <cmath>
 #include <cstdint>
 
+#include "base/srgb.h"
+
 namespace tp::geometry::internal {
 
-/// sRGB-encoded value (0..1) to linear light (IEC 61966-2-1).
-inline double srgb_to_linear(double c) {
-  return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
-}
-
-/// Linear light (0..1) to sRGB encoding.
-inline double linear_to_srgb(double c) {
-  if (c <= 0) return 0;
-  if (c >= 1) return 1;
-  return c <= 0.0031308 ? c * 12.92 : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055;
-}
+using tp::linear_to_srgb;
+using tp::srgb_to_linear;
 
 /// The 256 linear values of the 8-bit sRGB codes.
 inline const std::array<float, 256>& srgb8_to_linear_table() {

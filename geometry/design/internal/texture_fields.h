@@ -10,7 +10,7 @@
 #include "geometry/design/fit_cylinder.h"
 #include "geometry/design/internal/closest_point.h"
 #include "geometry/design/internal/garment_surface.h"
-#include "geometry/design/internal/mip_image.h"
+#include "geometry/design/raster/mip_image.h"
 
 namespace tp::geometry::internal {
 

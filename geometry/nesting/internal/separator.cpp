@@ -14,60 +14,6 @@ constexpr double kSubstantialImprovement = 0.98;
 
 }  // namespace
 
-ThreadTeam::ThreadTeam(int threads) {
-  for (int i = 1; i < std::max(1, threads); ++i) threads_.emplace_back([this, i] { loop(i); });
-}
-
-ThreadTeam::~ThreadTeam() {
-  {
-    std::lock_guard lock(mutex_);
-    stop_ = true;
-  }
-  start_.notify_all();
-  for (std::thread& t : threads_) t.join();
-}
-
-void ThreadTeam::loop(int thread_index) {
-  std::uint64_t seen = 0;
-  const int n_threads = static_cast<int>(threads_.size()) + 1;
-  for (;;) {
-    const std::function<void(int)>* task;
-    int n;
-    {
-      std::unique_lock lock(mutex_);
-      start_.wait(lock, [&] { return stop_ || generation_ != seen; });
-      if (stop_) return;
-      seen = generation_;
-      task = task_;
-      n = n_tasks_;
-    }
-    for (int i = thread_index; i < n; i += n_threads) (*task)(i);
-    {
-      std::lock_guard lock(mutex_);
-      if (--pending_ == 0) done_.notify_one();
-    }
-  }
-}
-
-void ThreadTeam::run(int n_tasks, const std::function<void(int)>& task) {
-  if (threads_.empty() || n_tasks <= 1) {
-    for (int i = 0; i < n_tasks; ++i) task(i);
-    return;
-  }
-  const int n_threads = static_cast<int>(threads_.size()) + 1;
-  {
-    std::lock_guard lock(mutex_);
-    task_ = &task;
-    n_tasks_ = n_tasks;
-    pending_ = static_cast<int>(threads_.size());
-    ++generation_;
-  }
-  start_.notify_all();
-  for (int i = 0; i < n_tasks; i += n_threads) task(i);
-  std::unique_lock lock(mutex_);
-  done_.wait(lock, [&] { return pending_ == 0; });
-}
-
 double Budget::progress() const {
   using namespace std::chrono;
   double p = 0;
@@ -107,9 +53,7 @@ SearchSpace search_space(const Layout& layout, int k) {
   return s;
 }
 
-Separator::Separator(int workers, ThreadTeam* team) : team_(team) {
-  workers_.resize(std::max(1, workers));
-}
+Separator::Separator(int workers, ThreadPool* team) : team_(team) { workers_.resize(std::max(1, workers)); }
 
 void Separator::reseed(Rng& rng) {
   for (Worker& w : workers_) w.rng = Rng(rng.next());
@@ -151,8 +95,7 @@ void Separator::move_items(Worker& w, const SampleConfig& samples, const Budget&
 
 void Separator::move_items_multi(Layout& master, const SampleConfig& samples, const Budget& budget) {
   for (Worker& w : workers_) w.layout = master;
-  const std::function<void(int)> task = [&](int i) { move_items(workers_[i], samples, budget); };
-  team_->run(static_cast<int>(workers_.size()), task);
+  team_->parallel_for(static_cast<int>(workers_.size()), [&](int i, int) { move_items(workers_[i], samples, budget); });
   // Keep the worker with the least weighted loss; ties go to the lowest index.
   size_t best = 0;
   double best_loss = std::numeric_limits<double>::infinity();

@@ -8,37 +8,15 @@
 #include <cstdint>
 #include <functional>
 #include <mutex>
-#include <thread>
 #include <vector>
 
+#include "base/thread_pool.h"
 #include "geometry/common/cancel.h"
 #include "geometry/nesting/internal/layout.h"
 #include "geometry/nesting/internal/rng.h"
 #include "geometry/nesting/internal/search.h"
 
 namespace tp::geometry::nesting {
-
-/// Runs tasks 0..n-1 on a fixed set of threads; task i always runs on thread i % threads, and
-/// the caller's thread is thread 0. The work split is fixed, so results never depend on timing.
-class ThreadTeam {
- public:
-  explicit ThreadTeam(int threads);
-  ~ThreadTeam();
-  ThreadTeam(const ThreadTeam&) = delete;
-  ThreadTeam& operator=(const ThreadTeam&) = delete;
-  void run(int n_tasks, const std::function<void(int)>& task);
-
- private:
-  void loop(int thread_index);
-  std::vector<std::thread> threads_;
-  std::mutex mutex_;
-  std::condition_variable start_, done_;
-  const std::function<void(int)>* task_ = nullptr;
-  int n_tasks_ = 0;
-  std::uint64_t generation_ = 0;
-  int pending_ = 0;
-  bool stop_ = false;
-};
 
 /// Time, work and cancellation limits of a phase. Without `timed`, no clock is read: the phase
 /// ends on its work limit (or cancellation) alone, so its result does not depend on CPU load.
@@ -69,7 +47,7 @@ struct SeparatorConfig {
 /// Moves colliding copies until none collide.
 class Separator {
  public:
-  Separator(int workers, ThreadTeam* team);
+  Separator(int workers, ThreadPool* team);
 
   /// New worker random streams derived from `rng` (after the strip length changes).
   void reseed(Rng& rng);
@@ -91,7 +69,7 @@ class Separator {
   void move_items(Worker& w, const SampleConfig& samples, const Budget& budget);
   void move_items_multi(Layout& master, const SampleConfig& samples, const Budget& budget);
 
-  ThreadTeam* team_;
+  ThreadPool* team_;
   std::vector<Worker> workers_;
   QueryScratch scratch_;
   long own_evaluations_ = 0;

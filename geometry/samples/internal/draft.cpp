@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "geometry/common/tolerances.h"
+
 namespace tp::geometry::samples::internal {
 namespace {
 
@@ -32,10 +34,10 @@ std::pair<std::vector<Vec2>, std::vector<Vec2>> split_at(const std::vector<Vec2>
   if (i >= pts.size()) return {pts, {pts.back(), pts.back()}};
   double seg = norm(pts[i] - pts[i - 1]);
   Vec2 cut = seg > 0 ? pts[i - 1] + (pts[i] - pts[i - 1]) * ((s - acc) / seg) : pts[i - 1];
-  if (norm(cut - a.back()) > 1e-9) a.push_back(cut);
+  if (norm(cut - a.back()) > kSamePoint_mm) a.push_back(cut);
   b.push_back(cut);
   for (; i < pts.size(); ++i)
-    if (norm(pts[i] - b.back()) > 1e-9) b.push_back(pts[i]);
+    if (norm(pts[i] - b.back()) > kSamePoint_mm) b.push_back(pts[i]);
   if (b.size() < 2) b.push_back(pts.back());
   return {a, b};
 }
@@ -80,7 +82,7 @@ OutlineBuilder& OutlineBuilder::cubic(const std::string& name, Vec2 c1, Vec2 c2,
 OutlineBuilder& OutlineBuilder::polyline(const std::string& name, const std::vector<Vec2>& pts) {
   Edge e{name, EdgeCurve::kPolyline, {}, {cursor_}};
   for (Vec2 p : pts)
-    if (norm(p - e.points_mm.back()) > 1e-9) e.points_mm.push_back(p);
+    if (norm(p - e.points_mm.back()) > kSamePoint_mm) e.points_mm.push_back(p);
   edges_.push_back(std::move(e));
   cursor_ = pts.back();
   return *this;

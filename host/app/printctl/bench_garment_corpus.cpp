@@ -9,7 +9,7 @@
 #include <sstream>
 
 #include "geometry/body/load_body_obj.h"
-#include "geometry/pattern/freesewing_sizes.h"
+#include "geometry/pattern/import/freesewing_sizes.h"
 #include "geometry/samples/garments.h"
 #include "geometry/samples/sizes.h"
 

@@ -1,11 +1,11 @@
 // host/app/printctl/cmd_bench_rip.cpp: `printctl bench rip`: RIP throughput, peak memory against roll
-// length and the Ghostscript comparison, as key=value lines (see rip/bench/rip_bench.h).
+// length and the Ghostscript comparison, as key=value lines (see host/bench/rip_bench.h).
 #include <cstdio>
 #include <sstream>
 #include <string>
 
 #include "host/app/printctl/commands.h"
-#include "rip/bench/rip_bench.h"
+#include "host/bench/rip_bench.h"
 
 namespace tp::host::cli {
 

@@ -3,7 +3,7 @@
 #include <filesystem>
 #include <string>
 
-#include "geometry/pattern/load_pattern.h"
+#include "geometry/pattern/import/load_pattern.h"
 #include "geometry/pattern/stitches_json.h"
 #include "geometry/pattern/suggest_stitches.h"
 #include "geometry/pattern/validate.h"

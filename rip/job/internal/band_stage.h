@@ -6,8 +6,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "base/thread_pool.h"
 #include "rip/colour/ink_converter.h"
-#include "rip/common/internal/thread_pool.h"
 #include "rip/job/internal/screened_window.h"
 #include "rip/render/band_source.h"
 #include "rip/screen/screen.h"

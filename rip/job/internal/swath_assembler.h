@@ -4,9 +4,9 @@
 #include <cstdint>
 #include <vector>
 
+#include "base/thread_pool.h"
 #include "device/model/printer_model.h"
 #include "device/swath/swath.h"
-#include "rip/common/internal/thread_pool.h"
 #include "rip/job/internal/screened_window.h"
 #include "rip/job/rip_job.h"
 #include "rip/swath/pass_plan.h"

@@ -10,7 +10,7 @@
 #include "geometry/cutfile/cut_job.h"
 #include "geometry/cutfile/dxf_aama_writer.h"
 #include "geometry/cutfile/svg_writer.h"
-#include "geometry/pattern/dxf_aama.h"
+#include "geometry/pattern/import/dxf_aama.h"
 #include "tests/geometry/design/test_garments.h"
 #include "tests/support/paths.h"
 

@@ -7,11 +7,11 @@
 #include "geometry/body/body_sdf.h"
 #include "geometry/body/load_body_obj.h"
 #include "geometry/garment/distortion.h"
-#include "geometry/sewing/sew_garment.h"
 #include "geometry/mesh/mesh_pattern.h"
+#include "geometry/pattern/import/garmentcode.h"
 #include "geometry/samples/garments.h"
-#include "geometry/pattern/garmentcode.h"
 #include "geometry/samples/sizes.h"
+#include "geometry/sewing/sew_garment.h"
 #include "tests/support/paths.h"
 
 namespace tp::geometry {

@@ -5,8 +5,8 @@
 
 #include <set>
 
-#include "geometry/pattern/dxf_aama.h"
-#include "geometry/pattern/freesewing_svg.h"
+#include "geometry/pattern/import/dxf_aama.h"
+#include "geometry/pattern/import/freesewing_svg.h"
 #include "geometry/pattern/validate.h"
 #include "tests/support/paths.h"
 

@@ -7,8 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include "host/bench/textured_piece_renderer.h"
 #include "rip/image/image_io.h"
-#include "rip/render/textured_piece_renderer.h"
 #include "tests/support/paths.h"
 
 namespace tp::rip {

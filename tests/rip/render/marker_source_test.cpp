@@ -4,8 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include "host/bench/textured_piece_renderer.h"
 #include "rip/render/marker_preview.h"
-#include "rip/render/textured_piece_renderer.h"
 
 namespace tp::rip {
 namespace {

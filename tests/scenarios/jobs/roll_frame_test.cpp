@@ -13,7 +13,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "geometry/pattern/dxf_aama.h"
+#include "geometry/pattern/import/dxf_aama.h"
 #include "tests/scenarios/jobs/run_command.h"
 #include "tests/support/paths.h"
 

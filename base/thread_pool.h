@@ -1,0 +1,46 @@
+// base/thread_pool.h: a fixed pool of worker threads running index-parallel loops, for every layer.
+#pragma once
+
+#include <atomic>
+#include <condition_variable>
+#include <cstdint>
+#include <functional>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace tp {
+
+/// `threads` workers (the calling thread counts as worker 0) that run parallel_for loops. Work is
+/// handed out by index, so which worker runs an index never affects results that are written by
+/// index.
+class ThreadPool {
+ public:
+  /// `threads` <= 0 means std::thread::hardware_concurrency().
+  explicit ThreadPool(int threads);
+  ~ThreadPool();
+  ThreadPool(const ThreadPool&) = delete;
+  ThreadPool& operator=(const ThreadPool&) = delete;
+
+  int size() const { return static_cast<int>(workers_.size()) + 1; }
+
+  /// Runs fn(index, worker) for every index in [0, count) and returns when all have finished.
+  /// `fn` must not throw. Not reentrant.
+  void parallel_for(int count, const std::function<void(int index, int worker)>& fn);
+
+ private:
+  void worker_loop(int worker);
+  void run_indices(int worker);
+
+  std::vector<std::thread> workers_;
+  std::mutex mutex_;
+  std::condition_variable wake_, done_;
+  const std::function<void(int, int)>* task_ = nullptr;
+  int count_ = 0;
+  std::atomic<int> next_{0};
+  int busy_ = 0;
+  std::uint64_t generation_ = 0;
+  bool stop_ = false;
+};
+
+}  // namespace tp

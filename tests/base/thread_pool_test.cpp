@@ -1,0 +1,49 @@
+// tests/base/thread_pool_test.cpp: the shared worker pool runs every index once, on a worker in range.
+#include "base/thread_pool.h"
+
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <vector>
+
+namespace tp {
+namespace {
+
+TEST(ThreadPool, EveryIndexRunsOnceOnAWorkerInRange) {
+  for (int threads : {1, 2, 4}) {
+    ThreadPool pool(threads);
+    EXPECT_EQ(pool.size(), threads);
+    for (int round = 0; round < 20; ++round) {
+      const int n = 1 + round * 37;
+      std::vector<std::atomic<int>> runs(static_cast<size_t>(n));
+      std::atomic<bool> worker_out_of_range{false};
+      pool.parallel_for(n, [&](int i, int worker) {
+        runs[static_cast<size_t>(i)].fetch_add(1);
+        if (worker < 0 || worker >= threads) worker_out_of_range = true;
+      });
+      for (int i = 0; i < n; ++i)
+        ASSERT_EQ(runs[static_cast<size_t>(i)].load(), 1) << "threads " << threads << " index " << i;
+      EXPECT_FALSE(worker_out_of_range);
+    }
+  }
+}
+
+TEST(ThreadPool, ResultsWrittenByIndexDoNotDependOnTheThreadCount) {
+  auto sums = [](int threads) {
+    ThreadPool pool(threads);
+    std::vector<double> out(1000);
+    pool.parallel_for(1000, [&](int i, int) { out[static_cast<size_t>(i)] = 1.0 / (i + 1); });
+    return out;
+  };
+  EXPECT_EQ(sums(1), sums(3));
+}
+
+TEST(ThreadPool, EmptyLoopReturnsAtOnce) {
+  ThreadPool pool(2);
+  int calls = 0;
+  pool.parallel_for(0, [&](int, int) { ++calls; });
+  EXPECT_EQ(calls, 0);
+}
+
+}  // namespace
+}  // namespace tp
