@@ -5,7 +5,7 @@
 #include <cmath>
 #include <unordered_map>
 
-#include "base/thread_pool.h"
+#include "geometry/common/thread_pool.h"
 
 namespace tp::geometry {
 namespace {

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "base/srgb.h"
+#include "geometry/common/srgb.h"
 
 namespace tp::geometry {
 namespace {

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <mutex>
 
-#include "base/thread_pool.h"
+#include "geometry/common/thread_pool.h"
 #include "geometry/allowance/allowance_widths.h"
 #include "geometry/allowance/cut_outline.h"
 #include "geometry/design/internal/allowance_source.h"

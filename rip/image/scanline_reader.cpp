@@ -10,7 +10,7 @@
 #include <lcms2.h>
 #include <spdlog/fmt/fmt.h>
 
-#include "base/srgb.h"
+#include "geometry/common/srgb.h"
 #include "rip/colour/internal/lcms_handles.h"
 #include "rip/common/internal/log.h"
 #include "rip/image/internal/preflight.h"

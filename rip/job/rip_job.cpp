@@ -9,7 +9,7 @@
 
 #include "device/swath/packbits.h"
 
-#include "base/thread_pool.h"
+#include "geometry/common/thread_pool.h"
 #include "rip/common/internal/log.h"
 #include "rip/job/internal/band_stage.h"
 #include "rip/job/internal/screened_window.h"

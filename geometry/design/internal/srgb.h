@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstdint>
 
-#include "base/srgb.h"
+#include "geometry/common/srgb.h"
 
 namespace tp::geometry::internal {
 

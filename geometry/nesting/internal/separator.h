@@ -10,7 +10,7 @@
 #include <mutex>
 #include <vector>
 
-#include "base/thread_pool.h"
+#include "geometry/common/thread_pool.h"
 #include "geometry/common/cancel.h"
 #include "geometry/nesting/internal/layout.h"
 #include "geometry/nesting/internal/rng.h"

@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "base/thread_pool.h"
+#include "geometry/common/thread_pool.h"
 #include "rip/colour/ink_converter.h"
 #include "rip/job/internal/screened_window.h"
 #include "rip/render/band_source.h"

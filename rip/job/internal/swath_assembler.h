@@ -4,7 +4,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "base/thread_pool.h"
+#include "geometry/common/thread_pool.h"
 #include "device/model/printer_model.h"
 #include "device/swath/swath.h"
 #include "rip/job/internal/screened_window.h"

@@ -1,5 +1,5 @@
-// tests/base/thread_pool_test.cpp: the shared worker pool runs every index once, on a worker in range.
-#include "base/thread_pool.h"
+// tests/geometry/common/thread_pool_test.cpp: the shared worker pool runs every index once, on a worker in range.
+#include "geometry/common/thread_pool.h"
 
 #include <gtest/gtest.h>
 

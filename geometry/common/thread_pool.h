@@ -1,4 +1,5 @@
-// base/thread_pool.h: a fixed pool of worker threads running index-parallel loops, for every layer.
+// geometry/common/thread_pool.h: a fixed pool of worker threads running index-parallel loops, for
+// geometry and the layers above it (rip, host).
 #pragma once
 
 #include <atomic>

@@ -1,4 +1,4 @@
-// base/srgb.h: the sRGB transfer curve (IEC 61966-2-1), the one definition every layer uses.
+// geometry/common/srgb.h: the sRGB transfer curve (IEC 61966-2-1), defined once for geometry and rip.
 #pragma once
 
 #include <cmath>

@@ -1,5 +1,5 @@
-// base/thread_pool.cpp: the worker pool (threads made once, reused across loops).
-#include "base/thread_pool.h"
+// geometry/common/thread_pool.cpp: the worker pool (threads made once, reused across loops).
+#include "geometry/common/thread_pool.h"
 
 #include <algorithm>
 
