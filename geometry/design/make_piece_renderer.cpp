@@ -5,9 +5,9 @@
 #include <algorithm>
 #include <mutex>
 
-#include "geometry/common/thread_pool.h"
 #include "geometry/allowance/allowance_widths.h"
 #include "geometry/allowance/cut_outline.h"
+#include "geometry/common/thread_pool.h"
 #include "geometry/design/internal/allowance_source.h"
 #include "geometry/design/internal/band_mesh.h"
 #include "geometry/design/internal/closest_point.h"
@@ -59,7 +59,8 @@ Result<std::vector<LayerRuntime>> make_layers(const Design& design, const Garmen
       L.depth = std::make_unique<DepthMap>(*field, surface, p->occlusion_tolerance_mm);
       L.texture = std::move(field);
     } else if (const auto* b = std::get_if<BrushStroke>(&dl.content)) {
-      if (!garment_index) garment_index = std::make_unique<ClosestPointIndex>(surface.garment().vertices_mm, surface.triangles_3d());
+      if (!garment_index)
+        garment_index = std::make_unique<ClosestPointIndex>(surface.garment().vertices_mm, surface.triangles_3d());
       L.kind = LayerRuntime::Kind::kStroke;
       L.stroke = std::make_unique<StrokeField>(*b, surface, *garment_index);
       L.colour = premultiply(b->colour);
@@ -81,8 +82,8 @@ Polygon loop_polygon(const GarmentSurface& surface, int piece) {
 }  // namespace
 
 Result<std::unique_ptr<PieceRenderer>> make_piece_renderer(const Pattern& pattern, const Garment& garment,
-                                                          const Design& design, const Finishing& finishing,
-                                                          const RenderOptions& options, const CancelToken* cancel) {
+                                                           const Design& design, const Finishing& finishing,
+                                                           const RenderOptions& options, const CancelToken* cancel) {
   if (auto st = validate_design(design); !st) return std::unexpected(st.error());
   if (auto st = validate_finishing(pattern, finishing); !st) return std::unexpected(st.error());
   if (!(options.tolerance_mm > 0) || !(options.min_triangle_mm > 0))

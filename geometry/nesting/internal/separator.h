@@ -10,8 +10,8 @@
 #include <mutex>
 #include <vector>
 
-#include "geometry/common/thread_pool.h"
 #include "geometry/common/cancel.h"
+#include "geometry/common/thread_pool.h"
 #include "geometry/nesting/internal/layout.h"
 #include "geometry/nesting/internal/rng.h"
 #include "geometry/nesting/internal/search.h"
@@ -26,7 +26,7 @@ struct Budget {
   std::uint64_t* work_done = nullptr;
   std::uint64_t work_start = 0;
   const CancelToken* cancel = nullptr;
-  bool timed = true;             ///< false: `start` and `deadline` are ignored
+  bool timed = true;  ///< false: `start` and `deadline` are ignored
 
   bool out_of_time() const {
     return (cancel && cancel->cancelled()) || (timed && std::chrono::steady_clock::now() >= deadline);
@@ -81,8 +81,7 @@ class Separator {
 /// Scores placements by the weighted overlap loss of copy `k` (0 = collides with nothing).
 class SeparationEvaluator : public PlacementEvaluator {
  public:
-  SeparationEvaluator(const Layout& layout, int k, QueryScratch& scratch)
-      : layout_(layout), k_(k), scratch_(scratch) {}
+  SeparationEvaluator(const Layout& layout, int k, QueryScratch& scratch) : layout_(layout), k_(k), scratch_(scratch) {}
   const OrientedShape& shape(const Pose& pose) override;
   double evaluate(const Pose& pose, Vec2 t, double bound) override;
 
