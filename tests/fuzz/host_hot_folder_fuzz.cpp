@@ -2,7 +2,9 @@
 // included) and any contents is scanned and checked without crashing, and every refusal is text
 // that can go into JSON. Input: the entry's name up to the first newline, then its contents; a
 // name ending in '/' makes a folder whose job.json holds the contents, else a .zip file.
-// fuzz-sources: host/daemon/hot_folder.cpp host/daemon/intake.cpp host/job host/common host/session/sim_reexec.cpp geometry/sewing/cloth_material.cpp
+// fuzz-sources: host/daemon/hot_folder.cpp host/daemon/intake.cpp host/job host/common
+// fuzz-sources: host/session/sim_reexec.cpp geometry/sewing/cloth_material.cpp geometry/samples/sizes.cpp
+// fuzz-sources: geometry/body/measurements.cpp
 #include <unistd.h>
 
 #include <cstddef>

@@ -1,5 +1,6 @@
 // tests/fuzz/host_manifest_fuzz.cpp: job.json validation never crashes on any input.
 // fuzz-sources: host/job host/common host/session/sim_reexec.cpp geometry/sewing/cloth_material.cpp
+// fuzz-sources: geometry/samples/sizes.cpp geometry/body/measurements.cpp
 #include <cstddef>
 #include <cstdint>
 #include <string>

@@ -1,5 +1,6 @@
 // tests/fuzz/host_zip_fuzz.cpp: zip unpacking never crashes and never writes outside its folder.
 // fuzz-sources: host/job host/common host/session/sim_reexec.cpp geometry/sewing/cloth_material.cpp
+// fuzz-sources: geometry/samples/sizes.cpp geometry/body/measurements.cpp
 #include <unistd.h>
 
 #include <cstddef>
