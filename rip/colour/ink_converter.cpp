@@ -13,6 +13,7 @@
 #include <emmintrin.h>
 #endif
 
+#include "geometry/common/thread_pool.h"
 #include "rip/colour/internal/lcms_handles.h"
 #include "rip/colour/multi_ink_profile.h"
 #include "rip/common/internal/log.h"
@@ -125,7 +126,7 @@ struct InkConverter::Table {
     return interpolate_lanes(corners(r, g, b), 0);
   }
 
-  /// Fills `direct` with every colour's interpolation, on `threads` threads.
+  /// Fills `direct` with every colour's interpolation, on `threads` threads of the one pool.
   bool build_direct(int threads) {
     if (!direct.allocate(kDirectEntries * sizeof(std::uint32_t))) return false;
     for (std::uint32_t x = 0; x < 256; ++x) {
@@ -141,11 +142,10 @@ struct InkConverter::Table {
             out[direct_r[r] + direct_g[g] + direct_b[b]] =
                 interpolate4(static_cast<std::uint8_t>(r), static_cast<std::uint8_t>(g), static_cast<std::uint8_t>(b));
     };
-    threads = std::clamp(threads, 1, 16);
-    std::vector<std::thread> pool;
-    for (int k = 1; k < threads; ++k) pool.emplace_back(fill, 256 * k / threads, 256 * (k + 1) / threads);
-    fill(0, 256 / threads);
-    for (auto& th : pool) th.join();
+    // One blue plane per index: each worker writes its own planes, so the table never depends
+    // on the thread count.
+    ThreadPool pool(std::clamp(threads, 1, 16));
+    pool.parallel_for(256, [&fill](int b, int) { fill(b, b + 1); });
     return true;
   }
 #endif
