@@ -1,8 +1,11 @@
 // host/pipeline/stage_marker.cpp: the marker stage: cut outlines nested on the roll under the
 // job's grain, mirror, gap and defect rules; markers laid end to end; marker.png.
-#include "geometry/nesting/nest_pieces.h"
+#include <algorithm>
 #include <optional>
 
+#include <spdlog/fmt/fmt.h>
+
+#include "geometry/nesting/nest_pieces.h"
 #include "host/pipeline/internal/budget_ticker.h"
 #include "host/pipeline/internal/output_files.h"
 #include "host/pipeline/internal/pipeline_state.h"
@@ -61,12 +64,18 @@ Status stage_marker(PipelineState& ps) {
     ps.markers = std::move(**stored);
     ps.stage_reused = true;
   } else {
-    // Progress: the nester has no hook, but a time budget tells how far it is. A timer thread
+    // Progress: an iteration budget reports the iterations done through the nester's work hook,
+    // on this thread. A time budget has no such count, but tells how far it is: a timer thread
     // reports elapsed / budget while the pipeline thread nests (it makes no other calls meanwhile,
     // and the thread is joined before the stage ends, so calls never overlap).
     std::optional<BudgetTicker> ticker;
     if (ps.options.on_progress && opt.time_limit_s > 0)
       ticker.emplace(ps.options.on_progress, Stage::kMarker, opt.time_limit_s);
+    if (ps.options.on_progress && opt.work_limit > 0 && opt.time_limit_s == 0)
+      opt.on_work = [&ps](std::uint64_t done, std::uint64_t total) {
+        const double fraction = std::min(0.99, static_cast<double>(done) / static_cast<double>(total));
+        ps.options.on_progress(Stage::kMarker, fraction, fmt::format("{} of {} iterations", done, total));
+      };
     auto markers = geometry::nest_pieces(items, opt, ps.cancel, &nest_stats);
     ticker.reset();
     if (!markers) {
