@@ -152,6 +152,10 @@ Result<std::vector<Marker>> nest_pieces(const std::vector<NestItem>& items, cons
       so.work_limit = options.work_limit ? std::max<std::uint64_t>(1, static_cast<std::uint64_t>(options.work_limit / expected)) : 0;
       so.improve = so.time_limit_s > 0;
     }
+    if (options.on_work && options.work_limit > 0)
+      so.on_work = [&options, work_used](std::uint64_t done, std::uint64_t) {
+        options.on_work(std::min(options.work_limit, work_used + done), options.work_limit);
+      };
     auto solved = nest_strip(problem, so, cancel);
     if (!solved) return std::unexpected(solved.error().with_context("nesting"));
     work_used += solved->iterations;

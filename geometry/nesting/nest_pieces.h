@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -56,6 +57,10 @@ struct NestOptions {
   std::uint64_t seed = 0;
   int threads = 2;
   int workers = 2;
+  /// With a work_limit: called (from the calling thread) with the separator iterations done on
+  /// all markers so far and the work_limit, at each whole percent of a marker's share (a bounded
+  /// number of calls). It only observes: the markers are the same with or without it.
+  std::function<void(std::uint64_t done, std::uint64_t total)> on_work;
 };
 
 /// What the search spent, per marker (same order as the markers).

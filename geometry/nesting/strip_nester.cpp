@@ -205,13 +205,24 @@ Result<StripSolution> nest_strip(const StripProblem& problem, const StripOptions
                                std::chrono::duration<double>(clock::now() - start).count());
       }
     };
+    // Work progress at each whole percent of the work limit: a bounded number of calls.
+    std::uint64_t reported_percent = 0;
+    const std::function<void()> work_hook = [&] {
+      const std::uint64_t percent = std::min<std::uint64_t>(100, work * 100 / options.work_limit);
+      if (percent == reported_percent) return;
+      reported_percent = percent;
+      options.on_work(work, options.work_limit);
+    };
+    const std::function<void()>* on_work = options.on_work && options.work_limit > 0 ? &work_hook : nullptr;
     const auto split = start + std::chrono::duration_cast<clock::duration>(time_limit * options.explore_fraction);
     const auto explore_work = static_cast<std::uint64_t>(static_cast<double>(options.work_limit) * options.explore_fraction);
-    Budget b1{start, split, options.work_limit ? std::max<std::uint64_t>(explore_work, 1) : 0, &work, 0, &cancel, timed};
+    Budget b1{start, split,  options.work_limit ? std::max<std::uint64_t>(explore_work, 1) : 0, &work, 0, &cancel,
+              timed, on_work};
     SearchStats stats;
     explore(layout, sep, cfg, b1, rng, hook, stats);
     Budget b2{split, deadline, options.work_limit ? std::max<std::uint64_t>(options.work_limit - explore_work, 1) : 0,
-              &work, work, &cancel, timed};
+              &work, work,     &cancel,
+              timed, on_work};
     if (timed && b2.start < clock::now()) b2.start = clock::now();
     compress(layout, sep, cfg, b2, rng, hook, stats);
     sol.explore_feasible = stats.explore_feasible;

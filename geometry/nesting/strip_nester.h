@@ -66,6 +66,10 @@ struct StripOptions {
   double simplify_tolerance = 0.001;
   /// Called (from the calling thread) whenever a better feasible solution is found.
   std::function<void(double length, double density, double seconds)> on_improvement;
+  /// With a work_limit: called (from the calling thread) with the separator iterations done and
+  /// the work_limit, each time another whole percent of the limit is done (at most 100 calls a
+  /// run, never per iteration). It only observes: the layout is the same with or without it.
+  std::function<void(std::uint64_t done, std::uint64_t total)> on_work;
 };
 
 /// Where one copy of an item lies.

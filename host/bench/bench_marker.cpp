@@ -17,6 +17,7 @@
 #include "geometry/nesting/nest_pieces.h"
 #include "geometry/pattern/curve.h"
 #include "geometry/samples/garments.h"
+#include "host/pipeline/marker_nesting.h"
 
 namespace tp::rip {
 
@@ -69,20 +70,18 @@ Result<BenchJob> make_garment_bench_job(double width_mm, int threads) {
   auto renderer = geometry::make_piece_renderer(garment->pattern, garment->garment, design, finishing, options);
   if (!renderer) return fail(ErrorCode::kGeometry, "bench garment skirt8: " + renderer.error().what());
 
-  // One garment nested across the roll, grain along it.
-  std::vector<geometry::NestItem> items;
-  for (int p = 0; p < (*renderer)->piece_count(); ++p) {
-    geometry::NestItem it;
-    it.piece = p;
-    it.name = garment->pattern.pieces[static_cast<size_t>(p)].name;
-    it.outline_mm = (*renderer)->cut_outline_mm(p);
-    if (const auto& g = garment->pattern.pieces[static_cast<size_t>(p)].grain) it.grain = g->to_mm - g->from_mm;
-    items.push_back(std::move(it));
-  }
-  geometry::NestOptions nest;
-  nest.fabric_width_mm = width_mm;
-  nest.gap_mm = 2;
-  nest.time_limit_s = 5;
+  // One garment nested across the roll as the marker stage nests a job's: the job fields of the
+  // bench (grain both ways, no mirror, 2 mm gaps, no selvedge margin, 5 s of search).
+  host::MarkerSpec marker;
+  marker.fabric_width_mm = width_mm;
+  marker.gap_mm = 2;
+  marker.edge_margin_mm = 0;
+  marker.rotations = "grain";
+  marker.mirror = false;
+  marker.time_limit_s = 5;
+  marker.iterations = 0;
+  const std::vector<geometry::NestItem> items = host::marker_nest_items(garment->pattern, **renderer, marker);
+  geometry::NestOptions nest = host::marker_nest_options(marker);
   nest.threads = std::max(1, threads);
   auto markers = geometry::nest_pieces(items, nest);
   if (!markers || markers->empty())

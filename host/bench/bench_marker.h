@@ -34,8 +34,9 @@ BenchJob make_textured_bench_job(double width_mm);
 
 /// The real thing: the sample eight-gore skirt (size M) with the paper's cylindrical marbling
 /// projected around the body, rendered through the garment correspondence with textured seam
-/// allowance; one garment's pieces nested on the roll width (grain both ways, 2 mm gaps, 5 s of
-/// search). Fails with the geometry layer's error.
+/// allowance; one garment's pieces nested on the roll width by the marker stage's own items and
+/// options (host/pipeline/marker_nesting.h) for a job's marker of grain both ways, 2 mm gaps and
+/// 5 s of search. Fails with the geometry layer's error.
 [[nodiscard]] Result<BenchJob> make_garment_bench_job(double width_mm, int threads);
 
 /// Full coverage through the real design renderer: four panels sewn side by side (a flat job, no

@@ -1,58 +1,28 @@
 // host/pipeline/stage_marker.cpp: the marker stage: cut outlines nested on the roll under the
 // job's grain, mirror, gap and defect rules; markers laid end to end; marker.png.
-#include "geometry/nesting/nest_pieces.h"
+#include <algorithm>
+#include <cmath>
 #include <optional>
 
+#include <spdlog/fmt/fmt.h>
+
+#include "geometry/nesting/nest_pieces.h"
 #include "host/pipeline/internal/budget_ticker.h"
 #include "host/pipeline/internal/output_files.h"
 #include "host/pipeline/internal/pipeline_state.h"
 #include "host/pipeline/internal/plan_steps.h"
+#include "host/pipeline/marker_nesting.h"
 #include "rip/image/image_io.h"
 #include "rip/render/marker_preview.h"
 
 namespace tp::host::internal {
 
-namespace {
-
-geometry::PieceRotation rotation_rule(const std::string& r) {
-  if (r == "90") return geometry::PieceRotation::kQuarterTurns;
-  if (r == "free") return geometry::PieceRotation::kFree;
-  if (r == "fixed") return geometry::PieceRotation::kOneWay;
-  return geometry::PieceRotation::kGrainBothWays;
-}
-
-}  // namespace
-
 Status stage_marker(PipelineState& ps) {
   const MarkerSpec& m = ps.job.marker;
-  std::vector<geometry::NestItem> items;
+  std::vector<geometry::NestItem> items = marker_nest_items(ps.pattern, *ps.renderer, m);
   double piece_area_mm2 = 0;
-  for (int i = 0; i < ps.renderer->piece_count(); ++i) {
-    const geometry::Piece& piece = ps.pattern.pieces[static_cast<size_t>(i)];
-    geometry::NestItem item;
-    item.piece = i;
-    item.name = piece.name;
-    item.outline_mm = ps.renderer->cut_outline_mm(i);
-    item.rotation = rotation_rule(m.rotations);
-    item.mirror = m.mirror ? geometry::PieceMirror::kAllowed : geometry::PieceMirror::kNever;
-    if (piece.grain && geometry::norm(piece.grain->to_mm - piece.grain->from_mm) > 0)
-      item.grain = piece.grain->to_mm - piece.grain->from_mm;
-    piece_area_mm2 += std::abs(geometry::signed_area(item.outline_mm));
-    items.push_back(std::move(item));
-  }
-  geometry::NestOptions opt;
-  opt.fabric_width_mm = m.fabric_width_mm;
-  opt.gap_mm = m.gap_mm;
-  opt.selvedge_margin_mm = m.edge_margin_mm;
-  opt.end_margin_mm = m.gap_mm;
-  for (const auto& d : m.defects)
-    opt.defects_mm.push_back({{d.x_mm, d.y_mm}, {d.x_mm + d.width_mm, d.y_mm},
-                              {d.x_mm + d.width_mm, d.y_mm + d.length_mm}, {d.x_mm, d.y_mm + d.length_mm}});
-  opt.max_length_mm = m.max_length_mm.value_or(0);
-  // A reproducible budget counts separator iterations and reads no clock.
-  opt.time_limit_s = m.iterations > 0 ? 0 : m.time_limit_s;
-  opt.work_limit = static_cast<std::uint64_t>(m.iterations);
-  opt.seed = static_cast<std::uint64_t>(m.seed);
+  for (const geometry::NestItem& item : items) piece_area_mm2 += std::abs(geometry::signed_area(item.outline_mm));
+  geometry::NestOptions opt = marker_nest_options(m);
   geometry::NestStats nest_stats;
   auto stored = find_plan_markers(ps, items, opt);
   if (!stored) return fail(stored.error());
@@ -61,12 +31,18 @@ Status stage_marker(PipelineState& ps) {
     ps.markers = std::move(**stored);
     ps.stage_reused = true;
   } else {
-    // Progress: the nester has no hook, but a time budget tells how far it is. A timer thread
+    // Progress: an iteration budget reports the iterations done through the nester's work hook,
+    // on this thread. A time budget has no such count, but tells how far it is: a timer thread
     // reports elapsed / budget while the pipeline thread nests (it makes no other calls meanwhile,
     // and the thread is joined before the stage ends, so calls never overlap).
     std::optional<BudgetTicker> ticker;
     if (ps.options.on_progress && opt.time_limit_s > 0)
       ticker.emplace(ps.options.on_progress, Stage::kMarker, opt.time_limit_s);
+    if (ps.options.on_progress && opt.work_limit > 0 && opt.time_limit_s == 0)
+      opt.on_work = [&ps](std::uint64_t done, std::uint64_t total) {
+        const double fraction = std::min(0.99, static_cast<double>(done) / static_cast<double>(total));
+        ps.options.on_progress(Stage::kMarker, fraction, fmt::format("{} of {} iterations", done, total));
+      };
     auto markers = geometry::nest_pieces(items, opt, ps.cancel, &nest_stats);
     ticker.reset();
     if (!markers) {

@@ -6,8 +6,6 @@
 #include <cstring>
 #include <thread>
 
-#include <sys/mman.h>
-
 #include <lcms2.h>
 #include <spdlog/fmt/fmt.h>
 #include <spdlog/fmt/ranges.h>
@@ -15,9 +13,11 @@
 #include <emmintrin.h>
 #endif
 
+#include "geometry/common/thread_pool.h"
 #include "rip/colour/internal/lcms_handles.h"
 #include "rip/colour/multi_ink_profile.h"
 #include "rip/common/internal/log.h"
+#include "rip/common/memory.h"
 
 namespace tp::rip {
 
@@ -29,29 +29,8 @@ constexpr int kFracOne = 256;         ///< interpolation weights sum to this
 constexpr int kNodeScale = 128;       ///< node values are 8-bit ink amounts times this (fits int16)
 constexpr int kLane = 4;              ///< inks per 64-bit group of int16 node values
 
-/// 2^24 packed entries in memory of their own, backed by huge pages where the kernel allows: a
-/// pixel's lookup is one load, and neighbouring colours share pages.
-class DirectTable {
- public:
-  static constexpr size_t kEntries = size_t{1} << 24;
-  DirectTable() = default;
-  DirectTable(const DirectTable&) = delete;
-  DirectTable& operator=(const DirectTable&) = delete;
-  ~DirectTable() {
-    if (data_) munmap(data_, kEntries * sizeof(std::uint32_t));
-  }
-  bool allocate() {
-    void* p = mmap(nullptr, kEntries * sizeof(std::uint32_t), PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
-    if (p == MAP_FAILED) return false;
-    madvise(p, kEntries * sizeof(std::uint32_t), MADV_HUGEPAGE);  // advice only: fine if refused
-    data_ = static_cast<std::uint32_t*>(p);
-    return true;
-  }
-  std::uint32_t* data() const { return data_; }
-
- private:
-  std::uint32_t* data_ = nullptr;
-};
+/// Entries of the direct table: every 8-bit sRGB colour.
+constexpr size_t kDirectEntries = size_t{1} << 24;
 
 /// Where one 8-bit input value falls on a grid axis.
 struct AxisStep {
@@ -94,7 +73,9 @@ struct InkConverter::Table {
   /// unless InkConverterSettings::direct_table). Colours are stored in 4x4x4 blocks, at
   /// direct_r[r] + direct_g[g] + direct_b[b], so that the nearby colours of a smooth image share
   /// cache lines and pages.
-  DirectTable direct;
+  /// 2^24 packed entries in memory of their own, backed by huge pages where the kernel allows: a
+  /// pixel's lookup is one load, and neighbouring colours share pages.
+  HugePageBlock direct;
   std::array<std::uint32_t, 256> direct_r{}, direct_g{}, direct_b{};
   // Kept for convert_exact: the same separation at full precision.
   lcms::Profile profile;
@@ -145,15 +126,15 @@ struct InkConverter::Table {
     return interpolate_lanes(corners(r, g, b), 0);
   }
 
-  /// Fills `direct` with every colour's interpolation, on `threads` threads.
+  /// Fills `direct` with every colour's interpolation, on `threads` threads of the one pool.
   bool build_direct(int threads) {
-    if (!direct.allocate()) return false;
+    if (!direct.allocate(kDirectEntries * sizeof(std::uint32_t))) return false;
     for (std::uint32_t x = 0; x < 256; ++x) {
       direct_r[x] = (x >> 2) << 6 | (x & 3);
       direct_g[x] = (x >> 2) << 12 | (x & 3) << 2;
       direct_b[x] = (x >> 2) << 18 | (x & 3) << 4;
     }
-    std::uint32_t* out = direct.data();
+    auto* out = static_cast<std::uint32_t*>(direct.data());
     auto fill = [this, out](int b0, int b1) {
       for (int b = b0; b < b1; ++b)
         for (int g = 0; g < 256; ++g)
@@ -161,11 +142,10 @@ struct InkConverter::Table {
             out[direct_r[r] + direct_g[g] + direct_b[b]] =
                 interpolate4(static_cast<std::uint8_t>(r), static_cast<std::uint8_t>(g), static_cast<std::uint8_t>(b));
     };
-    threads = std::clamp(threads, 1, 16);
-    std::vector<std::thread> pool;
-    for (int k = 1; k < threads; ++k) pool.emplace_back(fill, 256 * k / threads, 256 * (k + 1) / threads);
-    fill(0, 256 / threads);
-    for (auto& th : pool) th.join();
+    // One blue plane per index: each worker writes its own planes, so the table never depends
+    // on the thread count.
+    ThreadPool pool(std::clamp(threads, 1, 16));
+    pool.parallel_for(256, [&fill](int b, int) { fill(b, b + 1); });
     return true;
   }
 #endif
@@ -366,7 +346,7 @@ bool InkConverter::convert_row(const geometry::Rgba8* in, int n, std::uint8_t* c
     // block is split into planes and scaled by coverage.
     constexpr int kBlock = 256;
     alignas(16) std::uint32_t packed[kBlock];
-    const std::uint32_t* direct = t.direct.data();
+    const auto* direct = static_cast<const std::uint32_t*>(t.direct.data());
     std::uint32_t ink4 = 0;
     for (int i0 = 0; i0 < n; i0 += kBlock) {
       const int m = std::min(kBlock, n - i0);

@@ -1,4 +1,4 @@
-// rip/common/memory.cpp: fixes glibc's mmap threshold (see memory.h).
+// rip/common/memory.cpp: glibc's mmap threshold and huge-page memory (see memory.h).
 #include "rip/common/memory.h"
 
 #include <malloc.h>
@@ -21,6 +21,25 @@ void advise_huge_pages(void* p, std::size_t bytes) {
   const auto begin = (reinterpret_cast<std::uintptr_t>(p) + kHuge - 1) & ~(kHuge - 1);
   const auto end = (reinterpret_cast<std::uintptr_t>(p) + bytes) & ~(kHuge - 1);
   if (end > begin) madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
+}
+
+HugePageBlock::~HugePageBlock() { release(); }
+
+void HugePageBlock::release() {
+  if (data_) munmap(data_, bytes_);
+  data_ = nullptr;
+  bytes_ = 0;
+}
+
+bool HugePageBlock::allocate(std::size_t bytes) {
+  release();
+  if (bytes == 0) return true;
+  void* p = mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+  if (p == MAP_FAILED) return false;
+  advise_huge_pages(p, bytes);
+  data_ = p;
+  bytes_ = bytes;
+  return true;
 }
 
 }  // namespace tp::rip

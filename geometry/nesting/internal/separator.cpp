@@ -120,6 +120,7 @@ bool Separator::separate(Layout& layout, const SeparatorConfig& config, Budget& 
     while (no_improve < config.iter_no_improve_limit && !budget.exhausted()) {
       move_items_multi(layout, config.samples, budget);
       ++*budget.work_done;
+      if (budget.on_work) (*budget.on_work)();
       const double loss = layout.total_loss();
       if (loss == 0) return true;
       if (loss < min_loss) {

@@ -27,6 +27,8 @@ struct Budget {
   std::uint64_t work_start = 0;
   const CancelToken* cancel = nullptr;
   bool timed = true;  ///< false: `start` and `deadline` are ignored
+  /// Called after every separator iteration (empty: nothing); it only observes.
+  const std::function<void()>* on_work = nullptr;
 
   bool out_of_time() const {
     return (cancel && cancel->cancelled()) || (timed && std::chrono::steady_clock::now() >= deadline);

@@ -2,16 +2,15 @@
 // onto the sample garments' pieces and prints seam and allowance continuity (CIEDE2000) and the
 // time taken; `--throughput` measures the renderer alone at 600 dpi in RIP-sized bands.
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <ctime>
 #include <filesystem>
 #include <string>
-#include <thread>
 #include <vector>
 
+#include "geometry/common/thread_pool.h"
 #include "geometry/continuity/continuity.h"
 #include "geometry/design/make_piece_renderer.h"
 #include "geometry/design/render_piece_image.h"
@@ -52,40 +51,39 @@ double process_cpu_s() {
   return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
 
-// Renders every piece's bounding box at `dpi` in 64-row bands on `threads` threads, into one
-// reused band buffer per thread as the RIP does (or whole images when `keep` asks for them);
-// returns the pixels rendered.
+// Renders every piece's bounding box at `dpi` in 64-row bands on `threads` threads of the pool,
+// into one reused band buffer per worker as the RIP does (or whole images when `keep` asks for
+// them); returns the pixels rendered.
 std::size_t render_all(const geometry::PieceRenderer& r, double dpi, int threads, std::vector<geometry::PieceImage>* keep) {
+  constexpr int kBand = 64;
   const int n = r.piece_count();
   std::vector<geometry::PieceImage> images(keep ? static_cast<size_t>(n) : 0);
-  std::atomic<int> next{0};
-  std::atomic<std::size_t> pixels{0};
-  auto work = [&] {
-    constexpr int kBand = 64;
-    std::vector<geometry::Rgba8> band;
-    for (int p = next++; p < n; p = next++) {
-      if (keep) {
-        images[static_cast<size_t>(p)] = geometry::render_piece_image(r, p, dpi, 2, kBand);
-        pixels += images[static_cast<size_t>(p)].image.pixels.size();
-        continue;
-      }
-      const auto box = geometry::bounds(r.cut_outline_mm(p));
-      const double mm = 25.4 / dpi;
-      const int w = static_cast<int>(std::ceil(box.width() / mm)) + 1, h = static_cast<int>(std::ceil(box.height() / mm)) + 1;
-      band.resize(static_cast<size_t>(w) * kBand);
-      for (int y0 = 0; y0 < h; y0 += kBand) {
-        std::fill(band.begin(), band.end(), geometry::Rgba8{});
-        r.render(p, geometry::Affine2{mm, 0, box.min.x, 0, -mm, box.max.y - y0 * mm}, w, std::min(kBand, h - y0), band.data(), w);
-      }
-      pixels += static_cast<std::size_t>(w) * static_cast<std::size_t>(h);
+  std::vector<std::size_t> pixels(static_cast<size_t>(n), 0);
+  ThreadPool pool(std::max(1, threads));
+  std::vector<std::vector<geometry::Rgba8>> bands(static_cast<size_t>(pool.size()));
+  pool.parallel_for(n, [&](int p, int worker) {
+    if (keep) {
+      images[static_cast<size_t>(p)] = geometry::render_piece_image(r, p, dpi, 2, kBand);
+      pixels[static_cast<size_t>(p)] = images[static_cast<size_t>(p)].image.pixels.size();
+      return;
     }
-  };
-  std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t) pool.emplace_back(work);
-  work();
-  for (auto& t : pool) t.join();
+    std::vector<geometry::Rgba8>& band = bands[static_cast<size_t>(worker)];
+    const auto box = geometry::bounds(r.cut_outline_mm(p));
+    const double mm = 25.4 / dpi;
+    const int w = static_cast<int>(std::ceil(box.width() / mm)) + 1,
+              h = static_cast<int>(std::ceil(box.height() / mm)) + 1;
+    band.resize(static_cast<size_t>(w) * kBand);
+    for (int y0 = 0; y0 < h; y0 += kBand) {
+      std::fill(band.begin(), band.end(), geometry::Rgba8{});
+      r.render(p, geometry::Affine2{mm, 0, box.min.x, 0, -mm, box.max.y - y0 * mm}, w, std::min(kBand, h - y0),
+               band.data(), w);
+    }
+    pixels[static_cast<size_t>(p)] = static_cast<std::size_t>(w) * static_cast<std::size_t>(h);
+  });
   if (keep) *keep = std::move(images);
-  return pixels.load();
+  std::size_t total = 0;
+  for (std::size_t px : pixels) total += px;
+  return total;
 }
 
 void bench_garment(const std::string& name, const BenchDesignArgs& a) {
@@ -165,35 +163,34 @@ void bench_throughput(const BenchDesignArgs& a) {
     constexpr int kBand = 64;
     const int bands = (h + kBand - 1) / kBand;
     for (int threads : {1, a.threads}) {
-      std::atomic<int> next{0};
-      std::atomic<std::size_t> covered{0};
-      std::vector<double> cpu(static_cast<size_t>(threads), 0.0);
-      auto work = [&](int t) {
-        std::vector<geometry::Rgba8> buf(static_cast<size_t>(w) * kBand);
-        std::size_t mine = 0;
-        const double c0 = thread_cpu_s();
-        for (int b = next++; b < bands; b = next++) {
-          std::fill(buf.begin(), buf.end(), geometry::Rgba8{});
-          const geometry::Affine2 m{mm, 0, box.min.x, 0, -mm, box.max.y - b * kBand * mm};
-          (*r)->render(piece, m, w, kBand, buf.data(), w);
-          for (const auto& p : buf) mine += p.a > 0;
-        }
-        cpu[static_cast<size_t>(t)] = thread_cpu_s() - c0;
-        covered += mine;
-      };
+      ThreadPool pool(threads);
+      std::vector<std::vector<geometry::Rgba8>> bufs(static_cast<size_t>(pool.size()),
+                                                     std::vector<geometry::Rgba8>(static_cast<size_t>(w) * kBand));
+      std::vector<std::size_t> covered(static_cast<size_t>(bands), 0);
+      std::vector<double> cpu(static_cast<size_t>(pool.size()), 0.0);
       const double t0 = now_s();
-      std::vector<std::thread> pool;
-      for (int t = 1; t < threads; ++t) pool.emplace_back(work, t);
-      work(0);
-      for (auto& t : pool) t.join();
+      pool.parallel_for(bands, [&](int b, int worker) {
+        const double c0 = thread_cpu_s();
+        std::vector<geometry::Rgba8>& buf = bufs[static_cast<size_t>(worker)];
+        std::fill(buf.begin(), buf.end(), geometry::Rgba8{});
+        const geometry::Affine2 m{mm, 0, box.min.x, 0, -mm, box.max.y - b * kBand * mm};
+        (*r)->render(piece, m, w, kBand, buf.data(), w);
+        std::size_t mine = 0;
+        for (const auto& p : buf) mine += p.a > 0;
+        covered[static_cast<size_t>(b)] = mine;
+        cpu[static_cast<size_t>(worker)] += thread_cpu_s() - c0;
+      });
       const double wall = now_s() - t0;
       double cpu_total = 0;
       for (double c : cpu) cpu_total += c;
+      std::size_t covered_px = 0;
+      for (std::size_t c : covered) covered_px += c;
       const double window_px = static_cast<double>(w) * kBand * bands;
-      std::printf("render=%s dpi=600 threads=%d window_mpx=%.1f covered_mpx=%.1f wall_mpx_per_s=%.1f "
-                  "covered_mpx_per_s=%.1f cpu_mpx_per_cpu_s=%.1f\n",
-                  label, threads, window_px / 1e6, static_cast<double>(covered.load()) / 1e6, window_px / wall / 1e6,
-                  static_cast<double>(covered.load()) / wall / 1e6, window_px / cpu_total / 1e6);
+      std::printf(
+          "render=%s dpi=600 threads=%d window_mpx=%.1f covered_mpx=%.1f wall_mpx_per_s=%.1f "
+          "covered_mpx_per_s=%.1f cpu_mpx_per_cpu_s=%.1f\n",
+          label, threads, window_px / 1e6, static_cast<double>(covered_px) / 1e6, window_px / wall / 1e6,
+          static_cast<double>(covered_px) / wall / 1e6, window_px / cpu_total / 1e6);
       std::fflush(stdout);
     }
   }

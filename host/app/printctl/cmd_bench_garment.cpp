@@ -229,8 +229,8 @@ void run_bench_garment(const BenchGarmentArgs& a) {
     if (!p) die(p.error().what(), 2);
     bench_one(name, std::move(*p), **body, a, tally);
   }
-  if (!a.garment.empty()) return;
-  // The GarmentCode references on their average female body.
+  if (!a.garment.empty() || a.data.empty()) return;
+  // The GarmentCode references on their average female body (reference data: only when asked).
   std::filesystem::path data = a.data;
   auto mean_female = load_body((data / "garmentcode/bodies/mean_female.obj").string(), 1000);
   for (const char* spec : {"dress_pencil", "shirt_mean"}) {
@@ -245,8 +245,6 @@ void run_bench_garment(const BenchGarmentArgs& a) {
 
 void register_bench_garment(CLI::App& bench) {
   auto args = std::make_shared<BenchGarmentArgs>();
-  const char* env = std::getenv("TP_SHARED_DATA");
-  args->data = env ? env : "../shared/data";
   CLI::App* cmd = bench.add_subcommand("garment", "Sew garments at a vertex count; print strain, seam and body figures");
   cmd->add_option("--garment", args->garment, "one sample garment (default: all four, then GarmentCode references)");
   cmd->add_option("--pattern", args->pattern, "a pattern file (native JSON or GarmentCode specification)");
@@ -291,7 +289,8 @@ void register_bench_garment(CLI::App& bench) {
   cmd->add_option("--material", args->material, "drape fabric preset (jersey, cotton-poplin, silk-satin, denim)");
   cmd->add_flag("!--no-drape", args->drape, "skip the drape after sewing");
   cmd->add_option("--out", args->out, "also write each garment's OBJ, body OBJ, previews and seam lengths into this folder");
-  cmd->add_option("--data", args->data, "shared reference data folder (default $TP_SHARED_DATA or ../shared/data)");
+  cmd->add_option("--data", args->data,
+                  "reference data folder: also bench its GarmentCode references (e.g. ../shared/data)");
   cmd->callback([args] { run_bench_garment(*args); });
 }
 

@@ -4,33 +4,27 @@
 
 #include <sys/stat.h>
 
+#include "host/daemon/http/plain_relative_name.h"
+
 namespace tp::host {
 
 namespace fs = std::filesystem;
 
 Result<fs::path> job_file_path(const fs::path& out_dir, const std::string& name) {
   const std::string shown = "file '" + name + "'";
-  if (name.empty() || name.size() > 1024) return fail(ErrorCode::kUnsafePath, shown + ": empty or too long a name");
-  if (name.front() == '/') return fail(ErrorCode::kUnsafePath, shown + ": absolute paths are refused");
+  auto parts = plain_relative_name(name, "the job's outputs");
+  if (!parts) return fail(parts.error());
   fs::path at = out_dir;
-  size_t start = 0;
-  while (start <= name.size()) {
-    size_t slash = name.find('/', start);
-    if (slash == std::string::npos) slash = name.size();
-    const std::string part = name.substr(start, slash - start);
-    if (part.empty() || part == "." || part == ".." || part.find('\0') != std::string::npos ||
-        part.find('\\') != std::string::npos)
-      return fail(ErrorCode::kUnsafePath, shown + ": '" + part + "' is not a plain name inside the job's outputs");
+  for (size_t i = 0; i < parts->size(); ++i) {
+    const std::string& part = (*parts)[i];
     at /= part;
     // lstat: a symlink is refused whatever it points at, even inside the folder.
     struct stat st {};
     if (::lstat(at.c_str(), &st) != 0) return fail(ErrorCode::kJob, "no " + shown + " among the job's outputs");
     if (S_ISLNK(st.st_mode)) return fail(ErrorCode::kUnsafePath, shown + ": '" + part + "' is a symlink; not served");
-    const bool last = slash == name.size();
+    const bool last = i + 1 == parts->size();
     if (last && !S_ISREG(st.st_mode)) return fail(ErrorCode::kJob, "no " + shown + " among the job's outputs (not a file)");
     if (!last && !S_ISDIR(st.st_mode)) return fail(ErrorCode::kJob, "no " + shown + " among the job's outputs");
-    start = slash + 1;
-    if (last) break;
   }
   return at;
 }

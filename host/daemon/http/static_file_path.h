@@ -10,7 +10,8 @@
 namespace tp::host {
 
 /// The file `name` (URL-decoded, '/' between folders) inside `root`. The name follows the rules of
-/// job_file_path (no empty, ".", ".." or absolute parts, no NUL or backslash: kUnsafePath), but a
+/// plain_relative_name, as job_file_path's does (no empty, ".", ".." or absolute parts, no NUL or
+/// backslash: kUnsafePath), but a
 /// symlink on the way is followed when its target lies inside `root` too, as Debian's javascript
 /// packages link build/three.module.js to ../three.module.js; a link leading out is kUnsafePath.
 /// A missing or non-regular file is kJob ("no file ...").

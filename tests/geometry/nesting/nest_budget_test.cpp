@@ -71,6 +71,35 @@ TEST(NestBudget, AWorkOnlyBudgetRepeatsBitForBitAndSpendsExactlyItsIterations) {
   EXPECT_EQ(sa.iterations[0], 80u);
 }
 
+TEST(NestBudget, TheWorkHookReportsBoundedRisingProgressAndLeavesTheMarkersAlone) {
+  auto plain = nest_pieces(pieces(), work_only(200));
+  NestOptions o = work_only(200);
+  std::vector<std::uint64_t> done;
+  o.on_work = [&](std::uint64_t d, std::uint64_t total) {
+    EXPECT_EQ(total, 200u);
+    done.push_back(d);
+  };
+  auto hooked = nest_pieces(pieces(), o);
+  ASSERT_TRUE(plain && hooked);
+  // Whole percents of the budget: more than a few calls, never more than 100, rising to the end.
+  EXPECT_GE(done.size(), 10u);
+  EXPECT_LE(done.size(), 100u);
+  for (size_t i = 1; i < done.size(); ++i) EXPECT_GT(done[i], done[i - 1]);
+  ASSERT_FALSE(done.empty());
+  EXPECT_LE(done.back(), 200u);
+  EXPECT_GE(done.back(), 198u);
+  ASSERT_EQ(plain->size(), hooked->size());
+  for (size_t k = 0; k < plain->size(); ++k) {
+    EXPECT_TRUE(same_bits((*plain)[k].length_mm, (*hooked)[k].length_mm));
+    ASSERT_EQ((*plain)[k].placements.size(), (*hooked)[k].placements.size());
+    for (size_t i = 0; i < (*plain)[k].placements.size(); ++i) {
+      const auto &p = (*plain)[k].placements[i], &q = (*hooked)[k].placements[i];
+      EXPECT_TRUE(same_bits(p.rotation_deg, q.rotation_deg));
+      EXPECT_TRUE(same_bits(p.offset_mm.x, q.offset_mm.x) && same_bits(p.offset_mm.y, q.offset_mm.y)) << i;
+    }
+  }
+}
+
 TEST(NestBudget, MoreIterationsNeverLengthenTheMarker) {
   auto few = nest_pieces(pieces(), work_only(5));
   auto many = nest_pieces(pieces(), work_only(120));

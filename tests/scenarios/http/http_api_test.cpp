@@ -151,16 +151,7 @@ TEST(HttpApi, JobsFilesAndEventsEndToEnd) {
   EXPECT_EQ(json::parse(pr->body)["state"], "idle");
 
   // A zip upload queues the job; the same bytes again are the same job.
-  // With a time budget (the default is iterations): the nester's progress is then elapsed over
-  // the budget, which the stage checks below look for.
-  const fs::path shirt = d.root() / "shirt";
-  fs::copy(example("shirt-front-flat"), shirt, fs::copy_options::recursive);
-  {
-    json j = json::parse(read_file(shirt / "job.json"));
-    j["marker"]["time_limit_s"] = 4;
-    std::ofstream(shirt / "job.json") << j.dump(2);
-  }
-  const std::string zip = zip_folder(shirt, d.root() / "shirt.zip");
+  const std::string zip = zip_folder(example("shirt-front-flat"), d.root() / "shirt.zip");
   auto up = c.Post("/api/v1/jobs", zip, "application/zip");
   ASSERT_TRUE(up);
   ASSERT_EQ(up->status, 201) << up->body;
@@ -197,8 +188,8 @@ TEST(HttpApi, JobsFilesAndEventsEndToEnd) {
   bool print_progress = false;
   for (const auto& e : seen) print_progress = print_progress || (e["type"] == "progress" && e["stage"] == "print");
   EXPECT_TRUE(print_progress);
-  // Within a stage: the RIP's bands (no printer: the print stage's work) and the nester's time
-  // budget (the example's 4 s) give fractions between 0 and 1, rising.
+  // Within a stage: the RIP's bands (no printer: the print stage's work) and the nester's
+  // iterations (the default budget) give fractions between 0 and 1, rising.
   for (const std::string stage : {"print", "marker"}) {
     std::vector<double> inner;
     for (const auto& e : seen)
