@@ -50,9 +50,15 @@ Status write_studio_package(StudioGarment& g, const json& settings, const fs::pa
   json rest = json::object();
   for (const char* key : {"name", "design", "finishing", "marker", "print"})
     if (settings.contains(key)) rest[key] = settings[key];
+  // The garment prints with the product's normal mesh and drape unless the designer chose them
+  // (the preview's coarse, undraped garment is only for the studio).
+  json garment = g.print_garment_section;
+  if (settings.contains("garment") && settings["garment"].is_object())
+    for (const auto& [key, value] : settings["garment"].items()) garment[key] = value;
+  rest["garment"] = garment;
   if (rest.contains("marker") && rest["marker"].is_object() && !rest["marker"].contains("fabric_width"))
     rest["marker"]["fabric_width"] = "1.6 m";
-  const std::string manifest = studio_manifest(g, rest);
+  const std::string manifest = studio_manifest(g, rest, true);
   if (auto job = parse_studio_job(g, manifest, limits); !job) return fail(job.error());
 
   // job.json and every upload, in name order (a deterministic archive for the same session).
