@@ -86,7 +86,7 @@ std::vector<LayerRuntime> make_layers(const Design& design, const RendererBase& 
     } else if (const auto* p = std::get_if<PlanarProjection>(&dl.content)) {
       auto field = std::make_unique<PlanarField>(*p, tolerance_mm);
       L.planar = field.get();
-      L.depth = std::make_unique<DepthMap>(*field, surface, p->occlusion_tolerance_mm);
+      L.depth = std::make_unique<DepthMap>(*field, surface, p->occlusion_tolerance_mm, base.options.occlusion_cell_mm);
       L.texture = std::move(field);
     } else if (const auto* b = std::get_if<BrushStroke>(&dl.content)) {
       L.kind = LayerRuntime::Kind::kStroke;
@@ -130,8 +130,9 @@ Result<std::shared_ptr<const RendererBase>> prepare_piece_renderer(const Pattern
                                                                    const RenderOptions& options,
                                                                    const CancelToken* cancel) {
   if (auto st = validate_finishing(pattern, finishing); !st) return std::unexpected(st.error());
-  if (!(options.tolerance_mm > 0) || !(options.min_triangle_mm > 0))
-    return fail(ErrorCode::kInvalidArgument, "render options: tolerance_mm and min_triangle_mm must be > 0");
+  if (!(options.tolerance_mm > 0) || !(options.min_triangle_mm > 0) || !(options.occlusion_cell_mm > 0))
+    return fail(ErrorCode::kInvalidArgument,
+                "render options: tolerance_mm, min_triangle_mm and occlusion_cell_mm must be > 0");
   auto base = std::make_shared<RendererBase>();
   base->options = options;
   base->blank_band = !finishing.textured_allowance;

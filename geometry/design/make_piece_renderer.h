@@ -23,6 +23,8 @@ struct RenderOptions {
   double min_triangle_mm = 0.25;
   /// Trilinear taps along the major axis of a stretched pixel footprint.
   int max_anisotropy = 8;
+  /// Finest cell of a planar layer's occlusion map (print: 0.5 mm; a preview can use its pixel).
+  double occlusion_cell_mm = 0.5;
   /// Threads used while building (the render calls themselves are single-threaded and reentrant).
   int build_threads = 2;
 };

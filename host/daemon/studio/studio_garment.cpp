@@ -20,6 +20,8 @@ geometry::RenderOptions studio_render_options(double dpi) {
   geometry::RenderOptions o;
   o.tolerance_mm = 25.4 / std::max(dpi, 1.0) / 4;
   o.min_triangle_mm = std::max(o.min_triangle_mm, o.tolerance_mm);
+  // Occlusion resolved to half a preview pixel, not to 0.5 mm.
+  o.occlusion_cell_mm = std::max(o.occlusion_cell_mm, 25.4 / std::max(dpi, 1.0) / 2);
   return o;
 }
 
