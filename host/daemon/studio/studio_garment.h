@@ -43,6 +43,10 @@ struct StudioGarment {
   /// The preview renderer's design-independent part (default finishing, preview options), made
   /// with the blank atlas and reused by every preview so a change rebuilds only the design's part.
   std::shared_ptr<const geometry::RendererBase> preview_base;
+  /// The garment a saved job prints on, sewn (undraped) from `print_sewn_section` on the first save
+  /// with strokes, so their points can be moved onto it; null until then.
+  std::shared_ptr<const JobGarment> print_sewn;
+  nlohmann::json print_sewn_section;
   std::mutex mu;  ///< one preview or package at a time per garment
 
   ~StudioGarment();
