@@ -3,7 +3,9 @@
 #include "geometry/design/make_piece_renderer.h"
 
 #include <algorithm>
+#include <atomic>
 #include <mutex>
+#include <optional>
 
 #include "geometry/allowance/allowance_widths.h"
 #include "geometry/allowance/cut_outline.h"
@@ -19,15 +21,45 @@
 #include "geometry/design/validate_design.h"
 
 namespace tp::geometry {
-namespace {
 
 using namespace internal;
+
+/// What every design on one garment shares: the surface, the allowance sources, each piece's cut
+/// outline, allowance band triangles and printed marks, and (once a stroke asks) the garment's
+/// closest-point index. Read-only once built, except the index made on first use.
+struct RendererBase {
+  struct Piece {
+    Polygon cut;
+    std::vector<std::array<Vec2, 3>> band;
+    std::vector<MarkSegment> marks;
+  };
+  RenderOptions options;
+  bool blank_band = false;
+  bool printed_marks = false;
+  std::uint32_t mark_colour = 0;
+  std::unique_ptr<GarmentSurface> surface;
+  std::unique_ptr<AllowanceSource> allowance;
+  std::vector<Piece> pieces;
+
+  const ClosestPointIndex& garment_index() const {
+    std::call_once(index_once_, [this] {
+      index_ = std::make_unique<ClosestPointIndex>(surface->garment().vertices_mm, surface->triangles_3d());
+    });
+    return *index_;
+  }
+
+ private:
+  mutable std::once_flag index_once_;
+  mutable std::unique_ptr<ClosestPointIndex> index_;
+};
+
+namespace {
 
 class DesignRenderer final : public PieceRenderer {
  public:
   int piece_count() const override { return static_cast<int>(pieces_.size()); }
 
-  const Polygon& cut_outline_mm(int piece) const override { return cut_[static_cast<size_t>(piece)]; }
+  const Polygon& cut_outline_mm(int piece) const override { return pieces_[static_cast<size_t>(piece)].cut_outline; }
 
   void render(int piece, const Affine2& pixel_to_piece_mm, int width_px, int height_px, Rgba8* out,
               std::ptrdiff_t row_stride_px) const override {
@@ -36,17 +68,15 @@ class DesignRenderer final : public PieceRenderer {
                   row_stride_px, window_);
   }
 
-  std::unique_ptr<GarmentSurface> surface_;
-  std::unique_ptr<AllowanceSource> allowance_;
-  std::unique_ptr<ClosestPointIndex> garment_index_;
+  std::shared_ptr<const RendererBase> base_;
   std::vector<LayerRuntime> layers_;
   std::vector<PieceData> pieces_;
-  std::vector<Polygon> cut_;
   WindowOptions window_;
 };
 
-Result<std::vector<LayerRuntime>> make_layers(const Design& design, const GarmentSurface& surface,
-                                              std::unique_ptr<ClosestPointIndex>& garment_index, double tolerance_mm) {
+std::vector<LayerRuntime> make_layers(const Design& design, const RendererBase& base) {
+  const GarmentSurface& surface = *base.surface;
+  const double tolerance_mm = base.options.tolerance_mm;
   std::vector<LayerRuntime> out;
   for (const DesignLayer& dl : design.layers) {
     LayerRuntime L;
@@ -56,13 +86,11 @@ Result<std::vector<LayerRuntime>> make_layers(const Design& design, const Garmen
     } else if (const auto* p = std::get_if<PlanarProjection>(&dl.content)) {
       auto field = std::make_unique<PlanarField>(*p, tolerance_mm);
       L.planar = field.get();
-      L.depth = std::make_unique<DepthMap>(*field, surface, p->occlusion_tolerance_mm);
+      L.depth = std::make_unique<DepthMap>(*field, surface, p->occlusion_tolerance_mm, base.options.occlusion_cell_mm);
       L.texture = std::move(field);
     } else if (const auto* b = std::get_if<BrushStroke>(&dl.content)) {
-      if (!garment_index)
-        garment_index = std::make_unique<ClosestPointIndex>(surface.garment().vertices_mm, surface.triangles_3d());
       L.kind = LayerRuntime::Kind::kStroke;
-      L.stroke = std::make_unique<StrokeField>(*b, surface, *garment_index);
+      L.stroke = std::make_unique<StrokeField>(*b, surface, base.garment_index());
       L.colour = premultiply(b->colour);
     } else if (const auto* t = std::get_if<TextureTransfer>(&dl.content)) {
       L.texture = make_transfer_field(*t, tolerance_mm);
@@ -79,50 +107,56 @@ Polygon loop_polygon(const GarmentSurface& surface, int piece) {
   return poly;
 }
 
+// Appends `part` (triangles built from a later run of the same piece's sources) to `dst`.
+void append_part(PieceData& dst, const PieceData& part) {
+  const auto layer_offset = static_cast<std::uint32_t>(dst.layers.size());
+  const auto segment_offset = static_cast<std::uint32_t>(dst.stroke_segments.size());
+  dst.tris.insert(dst.tris.end(), part.tris.begin(), part.tris.end());
+  for (size_t i = 1; i < part.layer_start.size(); ++i) dst.layer_start.push_back(part.layer_start[i] + layer_offset);
+  for (TriLayer e : part.layers) {
+    if (e.count > 0) e.first += segment_offset;  // stroke entries; texture ones keep first = 0
+    dst.layers.push_back(e);
+  }
+  dst.stroke_segments.insert(dst.stroke_segments.end(), part.stroke_segments.begin(), part.stroke_segments.end());
+}
+
+// Source triangles per build task: small enough that a piece's work spreads over the threads.
+constexpr int kTrianglesPerTask = 48;
+
 }  // namespace
 
-Result<std::unique_ptr<PieceRenderer>> make_piece_renderer(const Pattern& pattern, const Garment& garment,
-                                                           const Design& design, const Finishing& finishing,
-                                                           const RenderOptions& options, const CancelToken* cancel) {
-  if (auto st = validate_design(design); !st) return std::unexpected(st.error());
+Result<std::shared_ptr<const RendererBase>> prepare_piece_renderer(const Pattern& pattern, const Garment& garment,
+                                                                   const Finishing& finishing,
+                                                                   const RenderOptions& options,
+                                                                   const CancelToken* cancel) {
   if (auto st = validate_finishing(pattern, finishing); !st) return std::unexpected(st.error());
-  if (!(options.tolerance_mm > 0) || !(options.min_triangle_mm > 0))
-    return fail(ErrorCode::kInvalidArgument, "render options: tolerance_mm and min_triangle_mm must be > 0");
-  auto r = std::make_unique<DesignRenderer>();
+  if (!(options.tolerance_mm > 0) || !(options.min_triangle_mm > 0) || !(options.occlusion_cell_mm > 0))
+    return fail(ErrorCode::kInvalidArgument,
+                "render options: tolerance_mm, min_triangle_mm and occlusion_cell_mm must be > 0");
+  auto base = std::make_shared<RendererBase>();
+  base->options = options;
+  base->blank_band = !finishing.textured_allowance;
+  base->printed_marks = finishing.marks == MarkMode::kPrinted;
+  base->mark_colour = premultiply(finishing.mark_colour);
   auto surface = GarmentSurface::build(pattern, garment);
   if (!surface) return std::unexpected(surface.error().with_context("garment"));
-  r->surface_ = std::move(*surface);
-  auto layers = make_layers(design, *r->surface_, r->garment_index_, options.tolerance_mm);
-  if (!layers) return std::unexpected(layers.error());
-  r->layers_ = std::move(*layers);
-  r->allowance_ = std::make_unique<AllowanceSource>(*r->surface_);
-  r->window_.max_anisotropy = std::max(1, options.max_anisotropy);
+  base->surface = std::move(*surface);
+  base->allowance = std::make_unique<AllowanceSource>(*base->surface);
 
-  const int n = r->surface_->piece_count();
-  r->pieces_.resize(static_cast<size_t>(n));
-  r->cut_.resize(static_cast<size_t>(n));
-  BuildContext ctx;
-  ctx.surface = r->surface_.get();
-  ctx.allowance = r->allowance_.get();
-  ctx.layers = &r->layers_;
-  ctx.tolerance_mm = options.tolerance_mm;
-  ctx.min_edge_mm = options.min_triangle_mm;
-  ctx.blank_band = !finishing.textured_allowance;
-
-  // Pieces are independent: build them on a few threads, keep the first error.
-  std::mutex error_mutex;
-  std::optional<Error> first_error;
+  const int n = base->surface->piece_count();
+  base->pieces.resize(static_cast<size_t>(n));
+  std::vector<std::optional<Error>> errors(static_cast<size_t>(n));
   auto work = [&](int p) {
+    std::optional<Error>& error = errors[static_cast<size_t>(p)];
     if (cancel && cancel->cancelled()) {
-      std::lock_guard lock(error_mutex);
-      if (!first_error) first_error = Error{ErrorCode::kCancelled, "renderer build cancelled"};
+      error = Error{ErrorCode::kCancelled, "renderer build cancelled"};
       return;
     }
     const Piece& piece = pattern.pieces[static_cast<size_t>(p)];
     auto allowance = resolve_allowance(pattern, p, finishing);
     Result<Polygon> cut =
         allowance ? cut_outline(piece, *allowance, finishing.mitre_limit) : std::unexpected(allowance.error());
-    const Polygon mesh_loop = loop_polygon(*r->surface_, p);
+    const Polygon mesh_loop = loop_polygon(*base->surface, p);
     std::vector<std::vector<Vec2>> edges;
     for (const Edge& e : piece.edges) edges.push_back(e.points_mm);
     // The band reaches the cut line everywhere and at least the mesh boundary (whose chords
@@ -131,31 +165,103 @@ Result<std::unique_ptr<PieceRenderer>> make_piece_renderer(const Pattern& patter
         cut ? cut_outline(edges, allowance->width_mm, allowance->corner, finishing.mitre_limit, &mesh_loop)
             : std::unexpected(cut.error());
     if (!outer) {
-      std::lock_guard lock(error_mutex);
-      if (!first_error) first_error = outer.error().with_context("piece '" + piece.name + "'");
+      error = outer.error().with_context("piece '" + piece.name + "'");
       return;
     }
-    PieceData& pd = r->pieces_[static_cast<size_t>(p)];
-    r->cut_[static_cast<size_t>(p)] = *cut;
-    pd.cut_outline = *cut;
+    RendererBase::Piece& bp = base->pieces[static_cast<size_t>(p)];
+    bp.cut = *cut;
     // Band triangles about as long as the seam segments they face.
     double seg = 0;
     for (size_t i = 0; i < mesh_loop.size(); ++i) seg += norm(mesh_loop[(i + 1) % mesh_loop.size()] - mesh_loop[i]);
     const double spacing = std::clamp(seg / std::max<size_t>(1, mesh_loop.size()), 2.0, 20.0);
     // Break lines long enough to cross the widest allowance along a sharp corner's mitre.
     const double widest = *std::max_element(allowance->width_mm.begin(), allowance->width_mm.end());
-    const auto band = triangulate_band(mesh_loop, *outer, spacing, r->allowance_->source_breaks(p, 4 * widest + 5));
-    build_piece_triangles(p, band, ctx, pd);
-    if (finishing.marks == MarkMode::kPrinted) {
-      pd.marks = printed_marks(pattern, p, *allowance, finishing);
-      pd.mark_colour = premultiply(finishing.mark_colour);
-    }
-    build_grid(pd);
+    bp.band = triangulate_band(mesh_loop, *outer, spacing, base->allowance->source_breaks(p, 4 * widest + 5));
+    if (base->printed_marks) bp.marks = printed_marks(pattern, p, *allowance, finishing);
   };
   ThreadPool pool(std::clamp(options.build_threads, 1, std::max(1, n)));
   pool.parallel_for(n, [&](int p, int) { work(p); });
-  if (first_error) return std::unexpected(*first_error);
+  for (const auto& e : errors)
+    if (e) return std::unexpected(*e);
+  return std::shared_ptr<const RendererBase>(std::move(base));
+}
+
+Result<std::unique_ptr<PieceRenderer>> make_piece_renderer(const std::shared_ptr<const RendererBase>& base,
+                                                           const Design& design, const CancelToken* cancel) {
+  if (!base) return fail(ErrorCode::kInvalidArgument, "renderer base: none given");
+  if (auto st = validate_design(design); !st) return std::unexpected(st.error());
+  auto r = std::make_unique<DesignRenderer>();
+  r->base_ = base;
+  r->layers_ = make_layers(design, *base);
+  r->window_.max_anisotropy = std::max(1, base->options.max_anisotropy);
+
+  const GarmentSurface& surface = *base->surface;
+  const int n = surface.piece_count();
+  BuildContext ctx;
+  ctx.surface = &surface;
+  ctx.allowance = base->allowance.get();
+  ctx.layers = &r->layers_;
+  ctx.tolerance_mm = base->options.tolerance_mm;
+  ctx.min_edge_mm = base->options.min_triangle_mm;
+  ctx.blank_band = base->blank_band;
+
+  // Each piece's chart and band triangles in runs, the runs spread over the threads and joined
+  // in order: every source triangle is refined on its own, so the result does not depend on how
+  // the work was split.
+  struct Task {
+    int piece, chart_first, chart_last, band_first, band_last;
+  };
+  std::vector<Task> tasks;
+  std::vector<size_t> first_task(static_cast<size_t>(n) + 1, 0);
+  for (int p = 0; p < n; ++p) {
+    first_task[static_cast<size_t>(p)] = tasks.size();
+    const int chart = static_cast<int>(surface.chart(p).piece->mesh.triangles.size());
+    const int band = static_cast<int>(base->pieces[static_cast<size_t>(p)].band.size());
+    for (int t = 0; t < chart; t += kTrianglesPerTask)
+      tasks.push_back({p, t, std::min(chart, t + kTrianglesPerTask), 0, 0});
+    for (int t = 0; t < band; t += kTrianglesPerTask)
+      tasks.push_back({p, 0, 0, t, std::min(band, t + kTrianglesPerTask)});
+  }
+  first_task[static_cast<size_t>(n)] = tasks.size();
+  std::vector<PieceData> parts(tasks.size());
+  std::atomic<bool> cancelled{false};
+  ThreadPool pool(std::max(1, base->options.build_threads));
+  pool.parallel_for(static_cast<int>(tasks.size()), [&](int i, int) {
+    if (cancel && cancel->cancelled()) {
+      cancelled = true;
+      return;
+    }
+    const Task& t = tasks[static_cast<size_t>(i)];
+    const auto& band = base->pieces[static_cast<size_t>(t.piece)].band;
+    const std::vector<std::array<Vec2, 3>> band_run(band.begin() + t.band_first, band.begin() + t.band_last);
+    build_piece_triangles(t.piece, t.chart_first, t.chart_last, band_run, ctx, parts[static_cast<size_t>(i)]);
+  });
+  if (cancelled) return fail(ErrorCode::kCancelled, "renderer build cancelled");
+
+  r->pieces_.resize(static_cast<size_t>(n));
+  pool.parallel_for(n, [&](int p, int) {
+    PieceData& pd = r->pieces_[static_cast<size_t>(p)];
+    pd.layer_start.assign(1, 0);
+    for (size_t i = first_task[static_cast<size_t>(p)]; i < first_task[static_cast<size_t>(p) + 1]; ++i)
+      append_part(pd, parts[i]);
+    const RendererBase::Piece& bp = base->pieces[static_cast<size_t>(p)];
+    pd.cut_outline = bp.cut;
+    if (base->printed_marks) {
+      pd.marks = bp.marks;
+      pd.mark_colour = base->mark_colour;
+    }
+    build_grid(pd);
+  });
   return std::unique_ptr<PieceRenderer>(std::move(r));
+}
+
+Result<std::unique_ptr<PieceRenderer>> make_piece_renderer(const Pattern& pattern, const Garment& garment,
+                                                           const Design& design, const Finishing& finishing,
+                                                           const RenderOptions& options, const CancelToken* cancel) {
+  if (auto st = validate_design(design); !st) return std::unexpected(st.error());
+  auto base = prepare_piece_renderer(pattern, garment, finishing, options, cancel);
+  if (!base) return std::unexpected(base.error());
+  return make_piece_renderer(*base, design, cancel);
 }
 
 }  // namespace tp::geometry

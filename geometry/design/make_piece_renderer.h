@@ -23,9 +23,30 @@ struct RenderOptions {
   double min_triangle_mm = 0.25;
   /// Trilinear taps along the major axis of a stretched pixel footprint.
   int max_anisotropy = 8;
+  /// Finest cell of a planar layer's occlusion map (print: 0.5 mm; a preview can use its pixel).
+  double occlusion_cell_mm = 0.5;
   /// Threads used while building (the render calls themselves are single-threaded and reentrant).
   int build_threads = 2;
 };
+
+/// The design-independent part of a garment job's renderer (surface, allowance sources, cut
+/// outlines, band triangles, marks, the garment's closest-point index). Opaque; shared by every
+/// renderer made from it, so it outlives them.
+struct RendererBase;
+
+/// Builds what every design on this garment and finishing shares, once (the studio keeps it per
+/// garment session and only rebuilds the design's part after a change). Fails as make_piece_renderer
+/// does for the garment, finishing and options.
+[[nodiscard]] Result<std::shared_ptr<const RendererBase>> prepare_piece_renderer(const Pattern& pattern,
+                                                                                 const Garment& garment,
+                                                                                 const Finishing& finishing,
+                                                                                 const RenderOptions& options = {},
+                                                                                 const CancelToken* cancel = nullptr);
+
+/// The renderer of `design` on a prepared base: the same renderer, pixel for pixel, as
+/// make_piece_renderer with the base's pattern, garment, finishing and options.
+[[nodiscard]] Result<std::unique_ptr<PieceRenderer>> make_piece_renderer(
+    const std::shared_ptr<const RendererBase>& base, const Design& design, const CancelToken* cancel = nullptr);
 
 /// Builds the renderer. Each piece pixel maps to (piece, triangle, barycentric) -> 3D point ->
 /// the layers' colours, composited bottom first with their opacities; the seam allowance (widths

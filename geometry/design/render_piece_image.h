@@ -2,6 +2,8 @@
 // PNGs, tests and the design benchmark).
 #pragma once
 
+#include <vector>
+
 #include "geometry/common/image.h"
 #include "geometry/common/vec.h"
 #include "geometry/design/piece_renderer.h"
@@ -19,5 +21,11 @@ struct PieceImage {
 /// work into bands as the RIP does (0: one call).
 PieceImage render_piece_image(const PieceRenderer& renderer, int piece, double dpi, int margin_px = 2,
                               int rows_per_call = 0);
+
+/// The images of `pieces` as render_piece_image makes them (one call per piece, margin 2), their
+/// rows rendered in bands on `threads` threads (<= 1: on the caller's). The same pixels whatever
+/// the thread count: every pixel is rendered on its own.
+std::vector<PieceImage> render_piece_images(const PieceRenderer& renderer, const std::vector<int>& pieces, double dpi,
+                                            int threads);
 
 }  // namespace tp::geometry

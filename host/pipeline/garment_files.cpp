@@ -34,6 +34,8 @@ std::string body_obj(const geometry::BodyMesh& body) {
 constexpr int kAtlasGapPx = 2;
 // Share of the texture square the pieces' boxes may fill: shelves waste the rest.
 constexpr double kAtlasFill = 0.6;
+/// Threads rendering the atlas's pieces (band by band; the pixels do not depend on the count).
+constexpr int kAtlasThreads = 2;
 
 }  // namespace
 
@@ -131,12 +133,15 @@ Result<TexturedGarmentFiles> write_textured_garment(const std::filesystem::path&
   for (int attempt = 0; attempt < 4; ++attempt) {
     islands.clear();
     double island_area = 0;
-    for (const geometry::GarmentPiece& gp : garment.pieces) {
-      if (gp.piece < 0 || gp.piece >= renderer.piece_count()) continue;
-      auto img = geometry::render_piece_image(renderer, gp.piece, dpi);
+    std::vector<int> pieces;
+    for (const geometry::GarmentPiece& gp : garment.pieces)
+      if (gp.piece >= 0 && gp.piece < renderer.piece_count()) pieces.push_back(gp.piece);
+    auto images = geometry::render_piece_images(renderer, pieces, dpi, kAtlasThreads);
+    for (size_t k = 0; k < pieces.size(); ++k) {
+      geometry::PieceImage& img = images[k];
       if (img.image.width_px <= 0 || img.image.height_px <= 0) continue;
       island_area += static_cast<double>(img.image.width_px + kAtlasGapPx) * (img.image.height_px + kAtlasGapPx);
-      islands.push_back({gp.piece, std::move(img)});
+      islands.push_back({pieces[k], std::move(img)});
     }
     std::vector<size_t> order(islands.size());
     std::iota(order.begin(), order.end(), size_t{0});

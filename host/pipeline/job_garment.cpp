@@ -31,9 +31,9 @@ Result<JobGarment> sew_job_garment(const Job& job, const std::filesystem::path& 
   return out;
 }
 
-Result<std::unique_ptr<geometry::PieceRenderer>> make_job_renderer(const Job& job, const JobGarment& garment,
-                                                                   const geometry::RenderOptions& options,
-                                                                   const geometry::CancelToken& cancel) {
+Result<std::unique_ptr<geometry::PieceRenderer>> make_job_renderer(
+    const Job& job, const JobGarment& garment, const geometry::RenderOptions& options,
+    const geometry::CancelToken& cancel, std::shared_ptr<const geometry::RendererBase>* base) {
   RunOptions run;
   nlohmann::json report;
   internal::PipelineState ps{job, run, cancel, report};
@@ -42,7 +42,9 @@ Result<std::unique_ptr<geometry::PieceRenderer>> make_job_renderer(const Job& jo
   ps.garment_is_3d = garment.is_3d;
   ps.body = garment.body;
   ps.render_options = options;
+  if (base) ps.renderer_base = *base;
   if (auto st = internal::stage_design(ps); !st) return fail(st.error().with_context("design stage"));
+  if (base) *base = ps.renderer_base;
   return std::move(ps.renderer);
 }
 

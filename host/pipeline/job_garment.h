@@ -38,9 +38,10 @@ struct JobGarment {
 /// Runs the design stage of `job` (its layers and finishing) on `garment`, sewn from the same
 /// garment section: the renderer the print stage would use, built to `options` (a preview at a
 /// low dpi needs a coarser tolerance than print). Fails naming the layer or field.
-[[nodiscard]] Result<std::unique_ptr<geometry::PieceRenderer>> make_job_renderer(const Job& job,
-                                                                                 const JobGarment& garment,
-                                                                                 const geometry::RenderOptions& options,
-                                                                                 const geometry::CancelToken& cancel);
+/// `base`, when given, carries the design-independent part between calls: used when it holds one
+/// (made by an earlier call with this garment, the same finishing and options), filled when empty.
+[[nodiscard]] Result<std::unique_ptr<geometry::PieceRenderer>> make_job_renderer(
+    const Job& job, const JobGarment& garment, const geometry::RenderOptions& options,
+    const geometry::CancelToken& cancel, std::shared_ptr<const geometry::RendererBase>* base = nullptr);
 
 }  // namespace tp::host

@@ -7,6 +7,7 @@
 #include "geometry/design/text_layer.h"
 #include "geometry/design/texture_model.h"
 #include "geometry/design/textures.h"
+#include "geometry/design/validate_design.h"
 #include "host/pipeline/internal/pipeline_state.h"
 #include "rip/image/image_io.h"
 
@@ -176,8 +177,16 @@ Status stage_design(PipelineState& ps) {
   if (!design) return fail(design.error());
   ps.design = std::move(*design);
   ps.finishing = build_finishing(ps.job);
-  auto renderer =
-      geometry::make_piece_renderer(ps.pattern, *ps.garment, ps.design, ps.finishing, ps.render_options, &ps.cancel);
+  if (!ps.renderer_base) {
+    if (auto st = geometry::validate_design(ps.design); !st) return fail(ErrorCode::kPipeline, st.error().message);
+    auto base = geometry::prepare_piece_renderer(ps.pattern, *ps.garment, ps.finishing, ps.render_options, &ps.cancel);
+    if (!base) {
+      auto code = base.error().code == geometry::ErrorCode::kCancelled ? ErrorCode::kCancelled : ErrorCode::kPipeline;
+      return fail(code, base.error().message);
+    }
+    ps.renderer_base = std::move(*base);
+  }
+  auto renderer = geometry::make_piece_renderer(ps.renderer_base, ps.design, &ps.cancel);
   if (!renderer) {
     auto code = renderer.error().code == geometry::ErrorCode::kCancelled ? ErrorCode::kCancelled : ErrorCode::kPipeline;
     return fail(code, renderer.error().message);

@@ -10,14 +10,13 @@
 namespace tp::geometry::internal {
 namespace {
 
-// Cells are at least this fine, and the map at most this many cells on a side.
-constexpr double kMinCell_mm = 0.5;
+// The map has at most this many cells on a side.
 constexpr int kMaxCells = 2048;
 constexpr float kEmpty = -std::numeric_limits<float>::infinity();
 
 }  // namespace
 
-DepthMap::DepthMap(const PlanarField& field, const GarmentSurface& surface, double tolerance_mm)
+DepthMap::DepthMap(const PlanarField& field, const GarmentSurface& surface, double tolerance_mm, double min_cell_mm)
     : tolerance_mm_(tolerance_mm) {
   const auto& V = surface.garment().vertices_mm;
   std::vector<Vec3> pc(V.size());
@@ -27,7 +26,7 @@ DepthMap::DepthMap(const PlanarField& field, const GarmentSurface& surface, doub
     box.add({pc[i].x, pc[i].y});
   }
   if (box.empty()) return;
-  cell_mm_ = std::max(kMinCell_mm, std::max(box.width(), box.height()) / (kMaxCells - 4));
+  cell_mm_ = std::max(min_cell_mm, std::max(box.width(), box.height()) / (kMaxCells - 4));
   origin_ = box.min - Vec2{2 * cell_mm_, 2 * cell_mm_};
   nx_ = static_cast<int>(std::ceil(box.width() / cell_mm_)) + 5;
   ny_ = static_cast<int>(std::ceil(box.height() / cell_mm_)) + 5;

@@ -16,7 +16,8 @@ class DepthMap {
  public:
   enum class Coverage { kVisible, kHidden, kPartial };
 
-  DepthMap(const PlanarField& field, const GarmentSurface& surface, double tolerance_mm);
+  /// Cells are `min_cell_mm` (0.5 mm for print) or coarser, at most 2048 on a side.
+  DepthMap(const PlanarField& field, const GarmentSurface& surface, double tolerance_mm, double min_cell_mm = 0.5);
 
   /// Visibility 0..1 of a point given in plane coordinates (x, y, depth), filtered over the four
   /// nearest cells (percentage-closer filtering) so shadow edges are smooth.

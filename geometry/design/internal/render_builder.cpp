@@ -234,7 +234,8 @@ Linear2 fit_linear(const std::array<Vec2, 3>& p, const std::array<double, 3>& f)
   return l;
 }
 
-BuildStats build_piece_triangles(int piece, const std::vector<std::array<Vec2, 3>>& band, const BuildContext& ctx,
+BuildStats build_piece_triangles(int piece, int chart_first, int chart_last,
+                                 const std::vector<std::array<Vec2, 3>>& band, const BuildContext& ctx,
                                  PieceData& out) {
   BuildStats stats;
   out.tris.clear();
@@ -243,10 +244,11 @@ BuildStats build_piece_triangles(int piece, const std::vector<std::array<Vec2, 3
   out.layer_start.assign(1, 0);
   Builder b(piece, ctx, out, stats);
   const GarmentPiece& gp = *ctx.surface->chart(piece).piece;
-  stats.source_triangles = gp.mesh.triangles.size();
   stats.band_triangles = band.size();
-  for (size_t t = 0; t < gp.mesh.triangles.size(); ++t) b.add_chart_triangle(static_cast<int>(t));
+  const int chart = static_cast<int>(gp.mesh.triangles.size());
+  for (int t = std::max(0, chart_first); t < std::min(chart, chart_last); ++t) b.add_chart_triangle(t);
   for (const auto& t : band) b.add_band_triangle(t);
+  stats.source_triangles = static_cast<size_t>(std::max(0, std::min(chart, chart_last) - std::max(0, chart_first)));
   stats.render_triangles = out.tris.size();
   return stats;
 }

@@ -36,9 +36,10 @@ struct BuildStats {
 };
 
 /// Fills out.tris / layer_start / layers / stroke_segments for `piece` from its chart triangles
-/// and the allowance band triangles `band` (piece mm).
-BuildStats build_piece_triangles(int piece, const std::vector<std::array<Vec2, 3>>& band, const BuildContext& ctx,
-                                 PieceData& out);
+/// [chart_first, chart_last) and the allowance band triangles `band` (piece mm). Each source
+/// triangle is refined on its own, so runs built apart and joined in order equal one build.
+BuildStats build_piece_triangles(int piece, int chart_first, int chart_last,
+                                 const std::vector<std::array<Vec2, 3>>& band, const BuildContext& ctx, PieceData& out);
 
 /// Builds the window-lookup grid over out.tris.
 void build_grid(PieceData& out);

@@ -22,6 +22,8 @@ void register_garment_commands(CLI::App& app);
 void register_pattern_commands(CLI::App& app);
 // Colour tools (cmd_colour.cpp): calibrate, proof-check (design against printed fabric).
 void register_colour_commands(CLI::App& app);
+// The browser console (cmd_console.cpp): printsim and printd serving it, and its URL.
+void register_console_commands(CLI::App& app);
 
 // Benchmarks under `printctl bench` (cmd_bench_<what>.cpp).
 void register_bench_link(CLI::App& bench);

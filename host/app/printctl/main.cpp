@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
   tp::host::cli::register_garment_commands(app);
   tp::host::cli::register_pattern_commands(app);
   tp::host::cli::register_colour_commands(app);
+  tp::host::cli::register_console_commands(app);
 
   CLI::App* bench = app.add_subcommand("bench", "Measure a stage and print key=value figures");
   bench->require_subcommand(1);

@@ -317,9 +317,18 @@ void add_studio_routes(HttpServer::Impl& im) {
     json body;
     if (!read_json(req, reader, body, res)) return;
     for (const auto& [key, value] : body.items())
-      if (key != "name" && key != "design" && key != "finishing" && key != "marker" && key != "print")
+      if (key != "name" && key != "design" && key != "finishing" && key != "marker" && key != "print" &&
+          key != "garment")
         return send_problem(res, 400, "/" + key,
-                            "unknown field '" + key + "' (name, design, finishing, marker, print)");
+                            "unknown field '" + key + "' (name, design, finishing, marker, print, garment)");
+    if (body.contains("garment")) {
+      if (!body["garment"].is_object())
+        return send_problem(res, 400, "/garment", "garment must be an object (mesh_edge, drape)");
+      for (const auto& [key, value] : body["garment"].items())
+        if (key != "mesh_edge" && key != "drape")
+          return send_problem(res, 400, "/garment/" + key,
+                              "unknown field '" + key + "' (the saved garment's mesh_edge and drape)");
+    }
     const fs::path zip = g->dir / ("job-" + std::to_string(p->upload_serial.fetch_add(1)) + ".zip");
     struct Cleanup {
       fs::path path;

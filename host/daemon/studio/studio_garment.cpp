@@ -20,6 +20,8 @@ geometry::RenderOptions studio_render_options(double dpi) {
   geometry::RenderOptions o;
   o.tolerance_mm = 25.4 / std::max(dpi, 1.0) / 4;
   o.min_triangle_mm = std::max(o.min_triangle_mm, o.tolerance_mm);
+  // Occlusion resolved to half a preview pixel, not to 0.5 mm.
+  o.occlusion_cell_mm = std::max(o.occlusion_cell_mm, 25.4 / std::max(dpi, 1.0) / 2);
   return o;
 }
 
@@ -48,8 +50,10 @@ json StudioGarment::describe() const {
             {"job", base + "/job"}}}};
 }
 
-std::string studio_manifest(const StudioGarment& g, const json& rest) {
-  json j = {{"format", "tp-job/1"}, {"name", "studio-design"}, {"garment", g.garment_section}};
+std::string studio_manifest(const StudioGarment& g, const json& rest, bool for_print) {
+  json j = {{"format", "tp-job/1"},
+            {"name", "studio-design"},
+            {"garment", for_print ? g.print_garment_section : g.garment_section}};
   j["marker"] = {{"fabric_width", "1.6 m"}};
   if (rest.is_object())
     for (const auto& [key, value] : rest.items()) j[key] = value;
@@ -74,6 +78,7 @@ Result<std::unique_ptr<StudioGarment>> sew_studio_garment(std::string id, const 
   auto g = std::make_unique<StudioGarment>();
   g->id = std::move(id);
   g->dir = dir;
+  g->print_garment_section = garment_section;
   // A preview vertex count, and the garment as sewn (draping only changes how it hangs, and
   // the design is made on the sewn one).
   if (!garment_section.contains("mesh_edge")) garment_section["mesh_edge"] = kStudioMeshEdge;
@@ -87,7 +92,7 @@ Result<std::unique_ptr<StudioGarment>> sew_studio_garment(std::string id, const 
   g->sewn = std::move(*sewn);
   g->sew_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   // The blank atlas fixes the layout every preview repeats (same pieces, outlines and dpi).
-  auto blank = make_job_renderer(*job, g->sewn, studio_render_options(kStudioPreviewDpi), cancel);
+  auto blank = make_job_renderer(*job, g->sewn, studio_render_options(kStudioPreviewDpi), cancel, &g->preview_base);
   if (!blank) return fail(blank.error());
   auto files =
       write_textured_garment(dir / "garment", "atlas", g->sewn.pattern, g->sewn.garment, **blank, kStudioPreviewDpi);
@@ -100,6 +105,8 @@ Result<std::unique_ptr<StudioGarment>> sew_studio_garment(std::string id, const 
   g->atlas_width_px = files->texture_width_px;
   g->atlas_height_px = files->texture_height_px;
   g->atlas_dpi = files->texture_dpi;
+  // Previews render at the atlas dpi: a base prepared for another dpi's accuracy is not theirs.
+  if (g->atlas_dpi != kStudioPreviewDpi) g->preview_base.reset();
   return g;
 }
 

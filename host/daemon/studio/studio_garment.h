@@ -32,11 +32,21 @@ struct StudioGarment {
   std::string id;
   std::filesystem::path dir;       ///< session folder (removed with the garment)
   nlohmann::json garment_section;  ///< job.json's "garment" object, asset paths relative to dir
+  /// The garment section as the designer gave it, without the preview's mesh edge and drape: what
+  /// a saved job prints with (the product's normal garment settings, unless the designer chose).
+  nlohmann::json print_garment_section;
   JobGarment sewn;
   std::string obj;  ///< the garment mesh, UVs into the preview atlas (0..1), mm
   int atlas_width_px = 0, atlas_height_px = 0;
   double atlas_dpi = 0;
   double sew_seconds = 0;
+  /// The preview renderer's design-independent part (default finishing, preview options), made
+  /// with the blank atlas and reused by every preview so a change rebuilds only the design's part.
+  std::shared_ptr<const geometry::RendererBase> preview_base;
+  /// The garment a saved job prints on, sewn (undraped) from `print_sewn_section` on the first save
+  /// with strokes, so their points can be moved onto it; null until then.
+  std::shared_ptr<const JobGarment> print_sewn;
+  nlohmann::json print_sewn_section;
   std::mutex mu;  ///< one preview or package at a time per garment
 
   ~StudioGarment();
@@ -44,9 +54,10 @@ struct StudioGarment {
   [[nodiscard]] nlohmann::json describe() const;
 };
 
-/// The job.json text of a studio job: the garment's section with `rest` (design, finishing,
-/// marker, print, name; each optional) merged in, and a default marker width.
-[[nodiscard]] std::string studio_manifest(const StudioGarment& g, const nlohmann::json& rest);
+/// The job.json text of a studio job: the garment's section (the preview's, or with `for_print`
+/// the one a saved job prints with) with `rest` (design, finishing, marker, print, name; each
+/// optional) merged in, and a default marker width.
+[[nodiscard]] std::string studio_manifest(const StudioGarment& g, const nlohmann::json& rest, bool for_print = false);
 
 /// Writes `manifest` as the session folder's job.json and parses it with the product's validator: the
 /// errors are the same "job.json: /pointer: what" lines `printctl validate` prints.

@@ -4,11 +4,14 @@
 #include <zip.h>
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <memory>
 #include <sstream>
 
+#include "geometry/design/transfer_surface_points.h"
 #include "host/job/manifest.h"
+#include "host/pipeline/job_garment.h"
 
 namespace tp::host {
 
@@ -42,6 +45,45 @@ Result<std::string> read_file(const fs::path& p) {
   return s.str();
 }
 
+// Stroke points were painted on the preview garment (25 mm mesh); the garment a saved job prints
+// on is sewn at another mesh edge and lies up to a few mm away, so every point moves to the same
+// place of the fabric on it (a design is made on the sewn garment, so it is sewn undraped here).
+Status move_strokes_to_print_garment(StudioGarment& g, const json& print_section, json& design,
+                                     const PackageLimits& limits) {
+  if (!design.is_object() || !design.contains("layers") || !design["layers"].is_array()) return {};
+  auto is_stroke = [](const json& l) {
+    return l.is_object() && l.value("type", "") == "stroke" && l.contains("points") && l["points"].is_array();
+  };
+  if (std::none_of(design["layers"].begin(), design["layers"].end(), is_stroke)) return {};
+  json section = print_section;
+  section["drape"] = false;
+  if (section == g.garment_section) return {};
+  if (!g.print_sewn || g.print_sewn_section != section) {
+    auto job = parse_studio_job(g, studio_manifest(g, {{"garment", section}}, true), limits);
+    if (!job) return fail(job.error());
+    auto sewn = sew_job_garment(*job, g.dir / "print-garment", geometry::CancelToken{});
+    if (!sewn) return fail(sewn.error().with_context("the garment the saved job prints on"));
+    g.print_sewn = std::make_shared<const JobGarment>(std::move(*sewn));
+    g.print_sewn_section = section;
+  }
+  for (json& layer : design["layers"]) {
+    if (!is_stroke(layer)) continue;
+    std::vector<geometry::Vec3> points;
+    for (const json& p : layer["points"]) {
+      if (!p.is_array() || p.size() != 3 || !p[0].is_number() || !p[1].is_number() || !p[2].is_number())
+        return {};  // the validator names a malformed point
+      points.push_back({p[0].get<double>(), p[1].get<double>(), p[2].get<double>()});
+    }
+    auto moved = geometry::transfer_surface_points(g.sewn.pattern, g.sewn.garment, g.print_sewn->garment, points);
+    if (!moved) return fail(ErrorCode::kPipeline, "stroke '" + layer.value("name", "") + "': " + moved.error().message);
+    json out = json::array();
+    for (const geometry::Vec3& q : *moved)
+      out.push_back({std::round(q.x * 1000) / 1000, std::round(q.y * 1000) / 1000, std::round(q.z * 1000) / 1000});
+    layer["points"] = out;
+  }
+  return {};
+}
+
 }  // namespace
 
 Status write_studio_package(StudioGarment& g, const json& settings, const fs::path& zip_path,
@@ -50,9 +92,17 @@ Status write_studio_package(StudioGarment& g, const json& settings, const fs::pa
   json rest = json::object();
   for (const char* key : {"name", "design", "finishing", "marker", "print"})
     if (settings.contains(key)) rest[key] = settings[key];
+  // The garment prints with the product's normal mesh and drape unless the designer chose them
+  // (the preview's coarse, undraped garment is only for the studio).
+  json garment = g.print_garment_section;
+  if (settings.contains("garment") && settings["garment"].is_object())
+    for (const auto& [key, value] : settings["garment"].items()) garment[key] = value;
+  rest["garment"] = garment;
+  if (rest.contains("design"))
+    if (auto st = move_strokes_to_print_garment(g, garment, rest["design"], limits); !st) return st;
   if (rest.contains("marker") && rest["marker"].is_object() && !rest["marker"].contains("fabric_width"))
     rest["marker"]["fabric_width"] = "1.6 m";
-  const std::string manifest = studio_manifest(g, rest);
+  const std::string manifest = studio_manifest(g, rest, true);
   if (auto job = parse_studio_job(g, manifest, limits); !job) return fail(job.error());
 
   // job.json and every upload, in name order (a deterministic archive for the same session).

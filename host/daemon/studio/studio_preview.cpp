@@ -26,7 +26,7 @@ Result<StudioPreview> render_studio_preview(StudioGarment& g, const nlohmann::js
   // atlas layout (pieces' cut outlines at the atlas dpi) stays the mesh's.
   auto job = parse_studio_job(g, studio_manifest(g, {{"design", design}}), limits);
   if (!job) return fail(job.error());
-  auto renderer = make_job_renderer(*job, g.sewn, studio_render_options(g.atlas_dpi), cancel);
+  auto renderer = make_job_renderer(*job, g.sewn, studio_render_options(g.atlas_dpi), cancel, &g.preview_base);
   if (!renderer) return fail(renderer.error());
   out.build_ms = ms_since(t0);
   const auto t1 = std::chrono::steady_clock::now();

@@ -42,6 +42,9 @@ struct PipelineState {
   geometry::Design design;
   geometry::Finishing finishing;
   std::unique_ptr<geometry::PieceRenderer> renderer;
+  /// The renderer's design-independent part: given (the studio's garment session keeps it), the
+  /// design stage reuses it; else the stage prepares it from the garment and finishing.
+  std::shared_ptr<const geometry::RendererBase> renderer_base;
   geometry::RenderOptions render_options;         ///< the design stage's renderer (defaults: 600 dpi accuracy)
   std::vector<geometry::Marker> markers;          ///< as nested, each in its own frame
   geometry::Marker roll;                          ///< all markers one after another on the roll

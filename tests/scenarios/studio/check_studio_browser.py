@@ -3,8 +3,9 @@
 # under printsim: sew a sample garment, place a planar image by a click, paint a stroke across a seam
 # with synthetic mouse events, check the 3D preview changed where the tools touched it (screenshot
 # pixels), time ten changes to the updated preview, save the job and check it with `printctl
-# validate`, that its stroke lies on the sewn garment within 1 mm and reaches two pieces, then print
-# it. Prints key=value figures; exit 0 when every check holds. TP_STUDIO_SHOTS=DIR keeps screenshots.
+# validate`, that the painted stroke lies on the studio's garment within 1 mm and reaches two pieces,
+# then print it and check the saved stroke lies on the garment the job sewed within 1 mm. Prints
+# key=value figures; exit 0 when every check holds. TP_STUDIO_SHOTS=DIR keeps screenshots.
 import base64
 import io
 import json
@@ -201,14 +202,22 @@ def main():
             job = json.loads(zipfile.ZipFile(zip_path).read("job.json"))
             strokes = [l for l in job["design"]["layers"] if l["type"] == "stroke"]
             check(len(strokes) == 1 and len(strokes[0]["points"]) >= 5, "the saved job holds the painted stroke")
+            # As painted: the page's stroke lies on the studio's sewn (preview) garment.
+            painted = driver.execute_script("return window.studio.design().layers.filter(l => l.type === 'stroke')")
             obj = urllib.request.urlopen(daemon.url.rstrip("/") + g["urls"]["mesh"]).read().decode()
             verts, tris = read_obj(obj)
-            near = [nearest_on_surface(tuple(p), verts, tris) for p in strokes[0]["points"]] if strokes else []
+            near = [nearest_on_surface(tuple(p), verts, tris) for p in painted[0]["points"]] if painted else []
             worst = max((d for d, _ in near), default=float("inf"))
             groups = sorted({grp for _, grp in near})
             print(f"stroke_points={len(near)} stroke_max_distance_mm={worst:.4f} stroke_pieces={','.join(groups)}")
-            check(worst <= 1.0, "every stroke point lies on the sewn garment within 1 mm")
+            check(worst <= 1.0, "every painted stroke point lies on the studio's sewn garment within 1 mm")
             check(len(groups) >= 2, "the stroke reaches two pieces")
+            check(len(strokes) == 1 and len(painted) == 1 and len(strokes[0]["points"]) == len(painted[0]["points"]),
+                  "the saved stroke has the painted stroke's points")
+            saved = job["garment"]
+            print(f"saved_garment={json.dumps(saved, sort_keys=True)}")
+            check("mesh_edge" not in saved and "drape" not in saved,
+                  "the saved job prints with the product's garment settings, not the preview's 25 mm undraped mesh")
 
             # Print: the same package submitted from the page runs to done under printsim.
             driver.find_element("id", "st-print").click()
@@ -221,6 +230,20 @@ def main():
                 time.sleep(1)
             print(f"printed_job={jid} state={state} print_wait_s={time.time() - end + 600:.0f}")
             check(state == "done", "the printed job is done")
+            # The garment the job printed (sewn at the product's mesh edge): the stroke lies on it too.
+            printed = [os.path.join(d, "garment.obj") for d, _, files in os.walk(os.path.join(root, "d", "out"))
+                       if "garment.obj" in files]
+            if printed and strokes:
+                pv, pt = read_obj(open(sorted(printed)[0]).read())
+                on_print = [nearest_on_surface(tuple(p), pv, pt) for p in strokes[0]["points"]]
+                far = max(d for d, _ in on_print)
+                print_groups = sorted({grp for _, grp in on_print})
+                print(f"printed_garment_vertices={len(pv)} stroke_max_distance_printed_mm={far:.4f} "
+                      f"printed_stroke_pieces={','.join(print_groups)}")
+                check(far <= 1.0, "every saved stroke point lies on the printed garment within 1 mm")
+                check(len(print_groups) >= 2, "the saved stroke reaches two pieces of the printed garment")
+            else:
+                check(False, f"the printed job's garment.obj is in the outputs ({printed})")
             errors = [e["message"] for e in driver.get_log("browser") if e.get("level") == "SEVERE"]
             for e in errors[:5]:
                 print(f"console_error={e}")

@@ -1,94 +1,11 @@
-#!/usr/bin/env python3
-# tests/scenarios/studio/studio_harness.py: shared by the studio's checks: printd (under printsim, or
-# alone with --printer none) on a free loopback port, headless Chromium through Selenium, the
-# garment OBJ as triangles per piece and point-to-surface distances.
+# tests/scenarios/studio/studio_harness.py: shared by the studio's checks: the console harness's
+# printd launcher and browsers (one launcher for both pages), the garment OBJ as triangles per
+# piece and point-to-surface distances.
 import os
-import re
-import signal
-import subprocess
 import sys
-import time
 
-SKIP = 77  # ctest SKIP_RETURN_CODE: no browser here
-HERE = os.path.dirname(os.path.abspath(__file__))
-SOURCE = os.environ.get("TP_SOURCE_DIR") or os.path.abspath(os.path.join(HERE, "../../.."))
-BIN = os.environ.get("TP_BIN_DIR") or os.path.join(SOURCE, "build/bin")
-CHROMIUM, CHROMEDRIVER = "/usr/bin/chromium", "/usr/bin/chromedriver"
-
-
-def need_browser():
-    """Exits with SKIP naming what is missing when Chromium, its driver or Selenium is absent."""
-    missing = [p for p in (CHROMIUM, CHROMEDRIVER) if not os.path.exists(p)]
-    try:
-        import selenium  # noqa: F401
-    except ImportError:
-        missing.append("python3-selenium")
-    if missing:
-        print(f"SKIP: no browser for the studio test: missing {', '.join(missing)}")
-        sys.exit(SKIP)
-
-
-class Daemon:
-    """printd with its own state folder; under printsim unless printer == 'none'. .url ends with '/'."""
-
-    def __init__(self, root, printer="sim", example="top-strokes"):
-        os.makedirs(root, exist_ok=True)
-        self.log_path = os.path.join(root, "printd.log")
-        conf = os.path.join(root, "none.conf")
-        with open(conf, "w") as f:
-            f.write("# the test gives every setting\n")
-        printd = [os.path.join(BIN, "printd"), "--state-dir", os.path.join(root, "state"), "--out",
-                  os.path.join(root, "out"), "--config", conf, "--listen", "127.0.0.1:0"]
-        if printer == "none":
-            cmd = printd + ["--printer", "none"]
-        else:
-            model = os.path.join(root, "printer-model.txt")
-            subprocess.run([os.path.join(BIN, "printctl"), "printer-model", os.path.join(SOURCE, "examples", example),
-                            "--out", model], check=True, stdout=subprocess.DEVNULL)
-            cmd = [os.path.join(BIN, "printsim"), "run", "--job-dirs", "--out", os.path.join(root, "out"),
-                   "--printer", model, "--"] + printd
-        env = dict(os.environ)
-        self.log = open(self.log_path, "w")
-        self.proc = subprocess.Popen(cmd, stdout=self.log, stderr=subprocess.STDOUT, start_new_session=True, env=env)
-        self.port = 0
-        deadline = time.time() + 30
-        while time.time() < deadline and not self.port:
-            m = re.search(r"HTTP API on http://[^ ]+:(\d+)", open(self.log_path).read())
-            if m:
-                self.port = int(m.group(1))
-            elif self.proc.poll() is not None:
-                break
-            else:
-                time.sleep(0.1)
-        if not self.port:
-            self.stop()
-            raise RuntimeError("printd did not start:\n" + open(self.log_path).read()[-3000:])
-        self.url = f"http://127.0.0.1:{self.port}/"
-
-    def stop(self):
-        if self.proc.poll() is None:
-            os.killpg(self.proc.pid, signal.SIGTERM)
-            try:
-                self.proc.wait(timeout=30)
-            except subprocess.TimeoutExpired:
-                os.killpg(self.proc.pid, signal.SIGKILL)
-                self.proc.wait()
-        self.log.close()
-
-
-def chromium(width=1366, height=768):
-    """Headless Chromium with software WebGL (SwiftShader), browser logs kept, downloads refused."""
-    from selenium import webdriver
-    from selenium.webdriver.chrome.service import Service
-    opts = webdriver.ChromeOptions()
-    opts.binary_location = CHROMIUM
-    for a in ("--headless=new", "--no-sandbox", "--use-gl=swiftshader", "--enable-unsafe-swiftshader",
-              "--disable-dev-shm-usage", f"--window-size={width},{height}", "--hide-scrollbars"):
-        opts.add_argument(a)
-    opts.set_capability("goog:loggingPrefs", {"browser": "ALL"})
-    driver = webdriver.Chrome(service=Service(CHROMEDRIVER), options=opts)
-    driver.set_window_size(width, height)
-    return driver
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../console"))
+from console_harness import BIN, SKIP, SOURCE, Daemon, chromium, need_browser, read_png, severe_logs  # noqa: E402,F401
 
 
 def read_obj(text):
