@@ -4,6 +4,7 @@
 #include "geometry/garment/role_placement.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <map>
 #include <string>
@@ -48,6 +49,13 @@ bool is_tube(const Pattern& pattern, int piece, double width_mm) {
   return false;
 }
 
+// Waistbands and belts go round the body lengthwise.
+bool is_band(const Piece& p) {
+  std::string n = p.role + " " + p.name;
+  for (char& c : n) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return n.find("waistband") != std::string::npos || n.find("belt") != std::string::npos;
+}
+
 }  // namespace
 
 std::vector<std::vector<Vec3>> initial_placement(const Pattern& pattern, const PatternMesh& meshes, const BodySdf& body) {
@@ -70,7 +78,21 @@ std::vector<std::vector<Vec3>> initial_placement(const Pattern& pattern, const P
     d = normalized(d);
     n = normalized(n);
     Vec3 c3 = rotate(pl, pc);
-    if (is_tube(pattern, static_cast<int>(pi), pb.width())) {
+    const Vec3 ex = normalized(rotate(pl, {1, 0}) - origin);
+    const bool y_round = std::abs(d.y) < 0.2 && std::abs(ex.y) > 0.8;
+    const bool x_round = std::abs(ex.y) < 0.2 && std::abs(d.y) > 0.8;
+    if (is_band(pattern.pieces[pi]) && (x_round || y_round)) {
+      // A band lying lengthwise round the body: a ring of its own length round the vertical axis,
+      // its middle where it was placed (in front).
+      const Vec3 round = y_round ? d : ex, up = y_round ? ex : d;
+      const double len = std::abs(dot(rotate(pl, pb.max) - rotate(pl, pb.min), round));
+      const double r = len / (2 * kPi);
+      Vec3 outward = Vec3{c3.x - centre.x, 0, c3.z - centre.z};
+      outward = norm(outward) > 0 ? normalized(outward) : Vec3{0, 0, 1};
+      const Vec3 foot = Vec3{centre.x, c3.y, centre.z} + outward * r;
+      for (Vec3& p : pts) p = p + (foot - c3);
+      roll(pts, foot, up, -outward, r);
+    } else if (is_tube(pattern, static_cast<int>(pi), pb.width())) {
       // Roll into a tube of its own width around an axis on the body's side of the piece.
       Vec3 to_body = Vec3{centre.x, c3.y, centre.z} - c3;
       Vec3 inward = dot(to_body, n) >= 0 ? n : -n;
