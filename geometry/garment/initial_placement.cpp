@@ -16,6 +16,8 @@ constexpr double kPi = 3.14159265358979323846;
 // Pieces nearer than this to their roll axis, or rolled further round than this, stay flat.
 constexpr double kMinRollRadiusMm = 30;
 constexpr double kMaxRollAngle = 0.8 * kPi;
+// A rolled piece placed by its role keeps this far from the body (mm).
+constexpr double kRollClearance_mm = 25;
 
 Vec3 rotate(const Placement3d& pl, Vec2 p) {
   const auto& r = pl.rotation;
@@ -47,6 +49,23 @@ bool is_tube(const Pattern& pattern, int piece, double width_mm) {
     if (std::abs(mid(st.a).x - mid(st.b).x) > 0.6 * width_mm) return true;
   }
   return false;
+}
+
+// The largest distance from the body's vertical axis (through `centre`) to the torso surface
+// between heights lo and hi: rays from the axis in 24 directions every 20 mm of height, each to
+// its first exit (arms beyond a gap do not count).
+double body_radius(const BodySdf& body, Vec3 centre, double lo, double hi) {
+  constexpr double kStep_mm = 4, kMax_mm = 800;
+  double r = 0;
+  for (double y = lo; y <= hi; y += 20)
+    for (int k = 0; k < 24; ++k) {
+      const double a = 2 * kPi * k / 24;
+      const Vec3 from{centre.x, y, centre.z}, dir{std::cos(a), 0, std::sin(a)};
+      double t = 0;
+      while (t < kMax_mm && body.query(from + dir * t).distance_mm < 0) t += kStep_mm;
+      if (t < kMax_mm) r = std::max(r, t);
+    }
+  return r;
 }
 
 // Waistbands and belts go round the body lengthwise.
@@ -103,6 +122,18 @@ std::vector<std::vector<Vec3>> initial_placement(const Pattern& pattern, const P
       double rs = dot(c3 - axis_pt, n);
       Vec3 inward = rs >= 0 ? -n : n;
       double r = std::abs(rs);
+      if (!pattern.pieces[pi].placement) {
+        // A piece placed by its role is placed at one level (the waist of a skirt): rolled, it
+        // must clear the body at every level it hangs over (the hips), or it starts inside.
+        double lo = 1e300, hi = -1e300;
+        for (const Vec3& p : pts) lo = std::min(lo, p.y), hi = std::max(hi, p.y);
+        const double clear = body_radius(body, centre, lo, hi) + kRollClearance_mm;
+        if (clear > r) {
+          for (Vec3& p : pts) p = p - inward * (clear - r);
+          c3 = c3 - inward * (clear - r);
+          r = clear;
+        }
+      }
       Vec3 foot = axis_pt - inward * r;
       Vec3 t = cross(d, inward);
       double s_max = 0;
