@@ -4,6 +4,7 @@
 #include "geometry/garment/role_placement.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <map>
 #include <string>
@@ -15,6 +16,8 @@ constexpr double kPi = 3.14159265358979323846;
 // Pieces nearer than this to their roll axis, or rolled further round than this, stay flat.
 constexpr double kMinRollRadiusMm = 30;
 constexpr double kMaxRollAngle = 0.8 * kPi;
+// A rolled piece placed by its role keeps this far from the body (mm).
+constexpr double kRollClearance_mm = 25;
 
 Vec3 rotate(const Placement3d& pl, Vec2 p) {
   const auto& r = pl.rotation;
@@ -48,6 +51,30 @@ bool is_tube(const Pattern& pattern, int piece, double width_mm) {
   return false;
 }
 
+// The largest distance from the body's vertical axis (through `centre`) to the torso surface
+// between heights lo and hi: rays from the axis in 24 directions every 20 mm of height, each to
+// its first exit (arms beyond a gap do not count).
+double body_radius(const BodySdf& body, Vec3 centre, double lo, double hi) {
+  constexpr double kStep_mm = 4, kMax_mm = 800;
+  double r = 0;
+  for (double y = lo; y <= hi; y += 20)
+    for (int k = 0; k < 24; ++k) {
+      const double a = 2 * kPi * k / 24;
+      const Vec3 from{centre.x, y, centre.z}, dir{std::cos(a), 0, std::sin(a)};
+      double t = 0;
+      while (t < kMax_mm && body.query(from + dir * t).distance_mm < 0) t += kStep_mm;
+      if (t < kMax_mm) r = std::max(r, t);
+    }
+  return r;
+}
+
+// Waistbands and belts go round the body lengthwise.
+bool is_band(const Piece& p) {
+  std::string n = p.role + " " + p.name;
+  for (char& c : n) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return n.find("waistband") != std::string::npos || n.find("belt") != std::string::npos;
+}
+
 }  // namespace
 
 std::vector<std::vector<Vec3>> initial_placement(const Pattern& pattern, const PatternMesh& meshes, const BodySdf& body) {
@@ -70,7 +97,21 @@ std::vector<std::vector<Vec3>> initial_placement(const Pattern& pattern, const P
     d = normalized(d);
     n = normalized(n);
     Vec3 c3 = rotate(pl, pc);
-    if (is_tube(pattern, static_cast<int>(pi), pb.width())) {
+    const Vec3 ex = normalized(rotate(pl, {1, 0}) - origin);
+    const bool y_round = std::abs(d.y) < 0.2 && std::abs(ex.y) > 0.8;
+    const bool x_round = std::abs(ex.y) < 0.2 && std::abs(d.y) > 0.8;
+    if (is_band(pattern.pieces[pi]) && (x_round || y_round)) {
+      // A band lying lengthwise round the body: a ring of its own length round the vertical axis,
+      // its middle where it was placed (in front).
+      const Vec3 round = y_round ? d : ex, up = y_round ? ex : d;
+      const double len = std::abs(dot(rotate(pl, pb.max) - rotate(pl, pb.min), round));
+      const double r = len / (2 * kPi);
+      Vec3 outward = Vec3{c3.x - centre.x, 0, c3.z - centre.z};
+      outward = norm(outward) > 0 ? normalized(outward) : Vec3{0, 0, 1};
+      const Vec3 foot = Vec3{centre.x, c3.y, centre.z} + outward * r;
+      for (Vec3& p : pts) p = p + (foot - c3);
+      roll(pts, foot, up, -outward, r);
+    } else if (is_tube(pattern, static_cast<int>(pi), pb.width())) {
       // Roll into a tube of its own width around an axis on the body's side of the piece.
       Vec3 to_body = Vec3{centre.x, c3.y, centre.z} - c3;
       Vec3 inward = dot(to_body, n) >= 0 ? n : -n;
@@ -81,6 +122,18 @@ std::vector<std::vector<Vec3>> initial_placement(const Pattern& pattern, const P
       double rs = dot(c3 - axis_pt, n);
       Vec3 inward = rs >= 0 ? -n : n;
       double r = std::abs(rs);
+      if (!pattern.pieces[pi].placement) {
+        // A piece placed by its role is placed at one level (the waist of a skirt): rolled, it
+        // must clear the body at every level it hangs over (the hips), or it starts inside.
+        double lo = 1e300, hi = -1e300;
+        for (const Vec3& p : pts) lo = std::min(lo, p.y), hi = std::max(hi, p.y);
+        const double clear = body_radius(body, centre, lo, hi) + kRollClearance_mm;
+        if (clear > r) {
+          for (Vec3& p : pts) p = p - inward * (clear - r);
+          c3 = c3 - inward * (clear - r);
+          r = clear;
+        }
+      }
       Vec3 foot = axis_pt - inward * r;
       Vec3 t = cross(d, inward);
       double s_max = 0;

@@ -66,6 +66,20 @@ Vec2 edge_mid(const Piece& p, int e) {
   return (pts.front() + pts.back()) * 0.5;
 }
 
+// The longest edge of band piece `i` (a waistband) that stitches join to other pieces, or -1.
+int band_sewn_edge(const Pattern& pattern, int i) {
+  int best = -1;
+  double best_len = 0;
+  for (const Stitch& st : pattern.stitches)
+    for (const auto& [mine, other] : {std::pair{st.a, st.b}, std::pair{st.b, st.a}})
+      if (mine.piece == i && other.piece != i) {
+        const auto& pts = pattern.pieces[static_cast<size_t>(i)].edges[static_cast<size_t>(mine.edge)].points_mm;
+        const double len = norm(pts.back() - pts.front());
+        if (len > best_len) best = mine.edge, best_len = len;
+      }
+  return best;
+}
+
 // The edge of piece `i` a stitch joins to piece `j` (the first such stitch), or -1.
 int edge_sewn_to(const Pattern& pattern, int i, int j) {
   for (const Stitch& st : pattern.stitches) {
@@ -179,6 +193,20 @@ std::vector<Placement3d> role_placements(const Pattern& pattern, const BodySdf& 
     if (has(role, "sleeve")) continue;  // placed below, beside the pieces they are sewn to
     if (has(role, "waistband") || has(role, "cuff") || has(role, "belt")) {
       const double z = L.waist_front_z + kGap_mm;
+      // Lengthwise round the body, the edge sewn to the garment at the bottom, at the garment's
+      // top (initial_placement rolls it into a ring of its own length).
+      const int sewn = band_sewn_edge(pattern, static_cast<int>(i));
+      if (sewn >= 0) {
+        const Vec2 c{(b.min.x + b.max.x) / 2, (b.min.y + b.max.y) / 2};
+        const Vec2 m = edge_mid(p, sewn);
+        const bool lengthwise_y = b.height() > b.width();
+        const bool low = lengthwise_y ? m.x < c.x : m.y < c.y;
+        Vec3 cx = lengthwise_y ? (low ? Y : -Y) : (low ? X : -X);
+        Vec3 cy = lengthwise_y ? (low ? -X : X) : (low ? Y : -Y);
+        const Vec2 anchor = lengthwise_y ? Vec2{m.x, c.y} : Vec2{c.x, m.y};
+        out[i] = frame(cx, cy, anchor, Vec3{L.axis.x, lower_body ? top_y : L.waist_y, z});
+        continue;
+      }
       out[i] = frame(X, Y, Vec2{(b.min.x + b.max.x) / 2, (b.min.y + b.max.y) / 2}, Vec3{L.axis.x, L.waist_y, z});
       continue;
     }

@@ -5,8 +5,10 @@
 #include <cctype>
 #include <cmath>
 #include <numbers>
+#include <optional>
 #include <set>
 
+#include "geometry/pattern/internal/free_edge_chains.h"
 #include "geometry/pattern/internal/text.h"
 #include "geometry/pattern/outline_segments.h"
 
@@ -207,6 +209,82 @@ bool adjacent(const Pattern& pattern, const EdgeInfo& a, const EdgeInfo& b) {
   return (a.edge + 1) % n == b.edge || (b.edge + 1) % n == a.edge;
 }
 
+/// Pieces sewn along one long edge to a run of several edges (a waist, a neckline, a sleeve end).
+bool band_role(const std::string& role) { return role == "waistband" || role == "collar" || role == "cuff"; }
+
+/// Where a band sewn round a whole loop starts: at a centre seam (between mirror copies) if there
+/// is one, else at a seam between two pieces, else at the loop's first edge.
+size_t loop_start(const Pattern& pattern, const std::vector<internal::EdgeRef>& loop) {
+  size_t best = 0;
+  int best_rank = -1;
+  for (size_t i = 0; i < loop.size(); ++i) {
+    const Piece& before = pattern.pieces[loop[(i + loop.size() - 1) % loop.size()].piece];
+    const Piece& after = pattern.pieces[loop[i].piece];
+    int rank = &before == &after ? 0 : 1;
+    if (rank && !before.source_piece.empty() && before.source_piece == after.source_piece &&
+        before.mirrored != after.mirrored)
+      rank = 2;
+    if (rank > best_rank) best = i, best_rank = rank;
+  }
+  return best;
+}
+
+/// A band's free long edge sewn along a run of at least three free edges the chosen stitches
+/// leave (a waistband round a skirt's waist across its darts and side seams), the band's start
+/// meeting the run's end. The best run by length within max_ease_ratio, or nothing.
+std::optional<StitchSuggestion> band_suggestion(const Pattern& pattern, const std::vector<EdgeInfo>& info,
+                                                const std::vector<int>& first_info, const std::vector<bool>& taken,
+                                                const std::vector<Stitch>& sewn, const SuggestOptions& o) {
+  std::optional<StitchSuggestion> best;
+  double best_r = 1e300;
+  const auto chains = internal::free_edge_chains(pattern, sewn);
+  for (size_t bi = 0; bi < info.size(); ++bi) {
+    const EdgeInfo& E = info[bi];
+    if (E.used || taken[bi] || !band_role(pattern.pieces[E.piece].role) || !(E.len > 0)) continue;
+    for (const auto& chain : chains) {
+      const size_t m = chain.edges.size();
+      auto at = [&](size_t k) -> const EdgeInfo& {
+        const auto& r = chain.edges[k % m];
+        return info[static_cast<size_t>(first_info[r.piece] + r.edge)];
+      };
+      for (size_t i = 0; i < m; ++i)
+        for (size_t k = 3; k <= m && (chain.closed || i + k <= m); ++k) {
+          const bool full_loop = chain.closed && k == m;
+          if (full_loop && i != loop_start(pattern, chain.edges)) continue;
+          double total = 0;
+          bool ok = true;
+          for (size_t t = 0; t < k && ok; ++t) {
+            const EdgeInfo& c = at(i + t);
+            ok = c.piece != E.piece && !c.hem && !taken[static_cast<size_t>(first_info[c.piece] + c.edge)];
+            total += c.len;
+          }
+          if (!ok || !(total > 0)) continue;
+          const double r = std::abs(E.len - total) / total;
+          // A whole loop (a waist all round) is the surer match of two equally long runs.
+          const double rank = full_loop ? r : r + 0.01;
+          if (r > o.max_ease_ratio || rank >= best_r) continue;
+          best_r = rank;
+          StitchSuggestion sg;
+          double from = 0, acc = 0;
+          for (size_t t = k; t-- > 0;) {  // the band runs along the chain backwards
+            const EdgeInfo& c = at(i + t);
+            acc += c.len;
+            const double to = t == 0 ? -1 : E.len * acc / total;
+            sg.stitches.push_back(Stitch{EdgeSpan{E.piece, E.edge, from, to}, EdgeSpan{c.piece, c.edge, 0, -1}, false});
+            from = to;
+          }
+          sg.score = (full_loop ? 0.9 : 0.8) - 0.1 * r / o.max_ease_ratio;
+          sg.reason = "band '" + pattern.pieces[E.piece].name + "' edge '" +
+                      pattern.pieces[E.piece].edges[E.edge].name + "' " + internal::mm(E.len) + " mm along " +
+                      std::to_string(k) + " edges of " + internal::mm(total) + " mm" +
+                      (full_loop ? " (all round)" : "");
+          best = std::move(sg);
+        }
+    }
+  }
+  return best;
+}
+
 }  // namespace
 
 std::vector<StitchSuggestion> suggest_stitches(const Pattern& pattern, const SuggestOptions& o) {
@@ -317,6 +395,20 @@ std::vector<StitchSuggestion> suggest_stitches(const Pattern& pattern, const Sug
     if (std::any_of(c.edges.begin(), c.edges.end(), [&](int k) { return taken[k]; })) continue;
     for (int k : c.edges) taken[k] = true;
     out.push_back(StitchSuggestion{c.stitches, c.score, c.reason});
+  }
+  // Bands last: the runs they are sewn along exist once the other seams are chosen.
+  std::vector<int> first_info(pattern.pieces.size(), 0);
+  for (int k = n - 1; k >= 0; --k) first_info[info[k].piece] = k;
+  for (;;) {
+    std::vector<Stitch> sewn = pattern.stitches;
+    for (const StitchSuggestion& sg : out) sewn.insert(sewn.end(), sg.stitches.begin(), sg.stitches.end());
+    auto band = band_suggestion(pattern, info, first_info, taken, sewn, o);
+    if (!band || band->score < o.min_score) break;
+    for (const Stitch& st : band->stitches) {
+      taken[first_info[st.a.piece] + st.a.edge] = true;
+      taken[first_info[st.b.piece] + st.b.edge] = true;
+    }
+    out.push_back(std::move(*band));
   }
   return out;
 }

@@ -43,6 +43,9 @@ struct StitchSuggestion {
 /// Two hems are never sewn together, nor an unfolded piece's edge to its own mirror image. Seams
 /// with no evidence beyond length (level edges without notches) stay under the default minimum.
 /// Greedy by score, so a job may accept the list as is, drop entries or add its own stitches.
+/// Then bands (role waistband, collar, cuff): a band's free edge is sewn along a run of three or
+/// more free edges the chosen seams join end to end (a skirt's waist across its darts and side
+/// seams), within max_ease_ratio of its length; a whole loop starts at a centre seam.
 std::vector<StitchSuggestion> suggest_stitches(const Pattern& pattern, const SuggestOptions& options = {});
 
 /// Appends the stitches of the suggestions scoring at least `min_score` to pattern.stitches;

@@ -18,6 +18,7 @@
 #include "host/daemon/intake.h"
 #include "host/daemon/printer_view.h"
 #include "host/daemon/requests/request_handler.h"
+#include "host/pipeline/job_stitch_check.h"
 #include "host/pipeline/printer_model.h"
 #include "host/pipeline/run_job.h"
 #include "host/store/job_store.h"
@@ -214,7 +215,7 @@ class Daemon {
   }
 
   Result<json> submit(JobStore& store, const fs::path& package, bool reprint) {
-    auto checked = check_package(package, spool_dir(), cfg_.limits);
+    auto checked = check_package(package, spool_dir(), cfg_.limits, check_job_stitches);
     if (!checked) return std::unexpected(checked.error());
     // One submit at a time between the duplicate check and the insert.
     std::lock_guard lock(submit_mu_);
@@ -275,7 +276,7 @@ class Daemon {
 
   void take_from_hot_folder(JobStore& store, const HotFolder& hot, const fs::path& entry) {
     const std::string name = entry.filename().string();
-    auto checked = check_package(entry, spool_dir(), cfg_.limits);
+    auto checked = check_package(entry, spool_dir(), cfg_.limits, check_job_stitches);
     if (!checked) {
       spdlog::warn("printd: {} refused: {}", printable_utf8(name), checked.error().message);
       fs::path dest = unique_child(hot.failed_dir(), name);

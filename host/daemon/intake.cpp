@@ -11,7 +11,8 @@ namespace tp::host {
 
 namespace fs = std::filesystem;
 
-Result<CheckedPackage> check_package(const fs::path& path, const fs::path& scratch_dir, const PackageLimits& limits) {
+Result<CheckedPackage> check_package(const fs::path& path, const fs::path& scratch_dir, const PackageLimits& limits,
+                                     const JobCheck& check) {
   fs::path unpack = scratch_dir / ("check-" + std::to_string(::getpid()) + "-" + path.filename().string());
   std::error_code ec;
   fs::remove_all(unpack, ec);
@@ -20,6 +21,8 @@ Result<CheckedPackage> check_package(const fs::path& path, const fs::path& scrat
     out = std::unexpected(pkg.error());
   } else if (auto job = load_job(*pkg); !job) {
     out = std::unexpected(job.error());
+  } else if (auto st = check ? check(*job) : Status{}; !st) {
+    out = std::unexpected(st.error());
   } else if (auto hash = package_hash(path); !hash) {
     out = std::unexpected(hash.error());
   } else {

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <string>
 
 #include "host/common/error.h"
@@ -17,12 +18,17 @@ struct CheckedPackage {
   std::string content_hash;     ///< SHA-256 of the package (sha256.h), for idempotent submit
 };
 
+/// A further check of a validated job while its package's files are at hand (the daemon's:
+/// check_job_stitches, host/pipeline/job_stitch_check.h).
+using JobCheck = std::function<Status(const Job&)>;
+
 /// Opens and validates the package at `path` (a .zip is unpacked into a scratch folder under
-/// `scratch_dir`, removed again). Fails with the validation error of the package.
-/// Everything is checked against `limits`; the refusal names the limit that was crossed.
+/// `scratch_dir`, removed again), then runs `check` on the job if given. Fails with the
+/// validation error of the package. Everything is checked against `limits`; the refusal names
+/// the limit that was crossed.
 [[nodiscard]] Result<CheckedPackage> check_package(const std::filesystem::path& path,
                                                    const std::filesystem::path& scratch_dir,
-                                                   const PackageLimits& limits = {});
+                                                   const PackageLimits& limits = {}, const JobCheck& check = {});
 
 /// Opens a spooled package for running: a folder in place; a zip unpacked afresh into
 /// `<package>.unpacked`. Returns the validated job.

@@ -11,10 +11,11 @@
 #include "geometry/garment/distortion.h"
 #include "geometry/garment/fit_checks.h"
 #include "geometry/garment/flat_garment.h"
+#include "geometry/garment/flat_pieces.h"
 #include "geometry/garment/garment_obj.h"
+#include "geometry/samples/garments.h"
 #include "geometry/sewing/drape_garment.h"
 #include "geometry/sewing/sew_garment.h"
-#include "geometry/samples/garments.h"
 #include "host/pipeline/garment_checks.h"
 #include "host/pipeline/garment_files.h"
 #include "host/pipeline/internal/pipeline_state.h"
@@ -72,14 +73,15 @@ std::function<void(double)> garment_progress(PipelineState& ps, double from, dou
 }
 
 // Drapes the sewn garment in the job's fabric; its figures go into report.garment.drape.
-Result<geometry::Garment> drape_job_garment(PipelineState& ps, nlohmann::json& figures) {
+Result<geometry::Garment> drape_job_garment(PipelineState& ps, const std::vector<int>& flat, nlohmann::json& figures) {
   auto material = job_material(ps.job.garment.material);
   if (!material) return fail(material.error());
   geometry::DrapeOptions o;
   o.material = *material;
   o.on_progress = garment_progress(ps, 0.5, 1.0, "draping");
   geometry::DrapeStats st;
-  auto g = geometry::drape_garment(*ps.garment, *ps.body, o, &st, &ps.cancel);
+  auto g = geometry::drape_garment(flat.empty() ? *ps.garment : geometry::garment_without(*ps.garment, flat), *ps.body,
+                                   o, &st, &ps.cancel);
   if (!g) return fail(from_geometry(g.error()));
   figures = {{"material", material->name},
              {"density_g_m2", material->density_g_m2},
@@ -100,6 +102,8 @@ Status stage_garment(PipelineState& ps) {
   auto body = job_body(ps);
   if (!body) return fail(body.error());
   ps.body = *body;
+  // On a body, pieces joined to no other piece (a pocket bag, a label) are printed flat.
+  const std::vector<int> flat = ps.body && !ps.garment ? geometry::unjoined_pieces(ps.pattern) : std::vector<int>{};
 
   geometry::SewStats stats;
   nlohmann::json alignment;
@@ -109,8 +113,11 @@ Status stage_garment(PipelineState& ps) {
     if (auto st = load_plan_garment(ps, &stats.stitch_gap_mm); !st) return st;
     ps.stage_reused = true;
   } else if (!ps.garment && ps.body) {
+    // Pieces no stitch joins to the rest are not sewn: the others are, and those lie where a flat
+    // job lays them, so they get a flat job's print.
+    geometry::PatternPart part = geometry::pattern_without(ps.pattern, *ps.meshes, flat);
     // A pattern placed around another body (or in a mirrored frame) is brought onto this one.
-    auto al = geometry::align_to_body(ps.pattern, *ps.body);
+    auto al = geometry::align_to_body(part.pattern, *ps.body);
     if (!al) return fail(from_geometry(al.error()));
     if (al->moved)
       alignment = {{"moved", true},
@@ -122,9 +129,15 @@ Status stage_garment(PipelineState& ps) {
     opt.target_edge_mm = ps.job.garment.mesh_edge_mm;
     opt.solver = ps.job.garment.sewing == "xpbd" ? geometry::SewSolver::kXpbd : geometry::SewSolver::kArap;
     opt.on_progress = garment_progress(ps, 0.0, ps.job.garment.drape ? 0.5 : 1.0, "sewing");
-    auto g = geometry::sew_garment(ps.pattern, *ps.meshes, *ps.body, opt, &stats, &ps.cancel);
+    auto g = geometry::sew_garment(part.pattern, part.meshes, *ps.body, opt, &stats, &ps.cancel);
     if (!g) return fail(from_geometry(g.error()));
-    ps.garment = std::move(*g);
+    std::vector<std::vector<double>> gaps(ps.pattern.stitches.size());
+    for (size_t k = 0; k < part.stitches.size() && k < stats.stitch_gap_mm.size(); ++k)
+      gaps[static_cast<size_t>(part.stitches[k])] = std::move(stats.stitch_gap_mm[k]);
+    stats.stitch_gap_mm = std::move(gaps);
+    auto whole = geometry::garment_with_flat_pieces(ps.pattern, *ps.meshes, part, *g);
+    if (!whole) return fail(from_geometry(whole.error()));
+    ps.garment = std::move(*whole);
     ps.garment_is_3d = true;
     ps.report["sewing"] = {{"solver", ps.job.garment.sewing},
                            {"sewing_iterations", stats.sewing_iterations},
@@ -141,12 +154,17 @@ Status stage_garment(PipelineState& ps) {
   std::optional<geometry::Garment> draped;
   nlohmann::json drape_figures;
   if (ps.garment_is_3d && ps.body && ps.job.garment.drape) {
-    auto g = drape_job_garment(ps, drape_figures);
+    auto g = drape_job_garment(ps, flat, drape_figures);
     if (!g) return fail(g.error());
     draped = std::move(*g);
-    if (ps.job.garment.correspondence == "draped") ps.garment = *draped;
+    if (ps.job.garment.correspondence == "draped") {
+      // The flat pieces keep their flat place (and print) in the draped correspondence too.
+      ps.garment = geometry::with_pieces_from(*draped, *ps.garment, flat);
+    }
   }
-  geometry::DistortionReport d = geometry::measure_distortion(ps.pattern, *ps.garment, ps.body.get());
+  // The 3D garment as worn: without the pieces printed flat.
+  const geometry::Garment worn = flat.empty() ? *ps.garment : geometry::garment_without(*ps.garment, flat);
+  geometry::DistortionReport d = geometry::measure_distortion(ps.pattern, worn, ps.body.get());
   ps.report["garment"] = {{"mode", ps.garment_is_3d ? "3d" : "flat"},
                           {"vertices", d.vertices},
                           {"triangles", d.triangles},
@@ -159,6 +177,15 @@ Status stage_garment(PipelineState& ps) {
                           {"min_clearance_mm", ps.body ? nlohmann::json(d.min_clearance_mm) : nlohmann::json(nullptr)}};
   ps.report["garment"]["stitches"] = stitches_json(ps.pattern, ps.stitch_sources, stats.stitch_gap_mm);
   if (!alignment.is_null()) ps.report["garment"]["alignment"] = alignment;
+  if (!flat.empty()) {
+    nlohmann::json fp = nlohmann::json::array();
+    for (int p : flat)
+      fp.push_back({{"piece", ps.pattern.pieces[static_cast<size_t>(p)].name},
+                    {"reason",
+                     "no stitch joins it to another piece: printed flat with the print a job without a body "
+                     "gives it, not part of the 3D garment or its checks"}});
+    ps.report["garment"]["flat_pieces"] = fp;
+  }
   if (draped) {
     drape_figures["correspondence"] = ps.job.garment.correspondence;
     ps.report["garment"]["drape"] = drape_figures;
@@ -171,9 +198,9 @@ Status stage_garment(PipelineState& ps) {
 
   // The 3D garment with its per-piece texture coordinates, and the previews for the report.
   const auto& out = ps.options.out_dir;
-  if (auto st = write_text_file(out / "garment.obj", geometry::garment_to_obj(ps.pattern, *ps.garment)); !st) return st;
-  auto previews = write_garment_previews(out, "garment-", *ps.garment, ps.body ? &ps.body->mesh() : nullptr,
-                                         rip::PngChannels::kRgba);
+  if (auto st = write_text_file(out / "garment.obj", geometry::garment_to_obj(ps.pattern, worn)); !st) return st;
+  auto previews =
+      write_garment_previews(out, "garment-", worn, ps.body ? &ps.body->mesh() : nullptr, rip::PngChannels::kRgba);
   if (!previews) return fail(previews.error());
   ps.report["garment"]["files"] = {{"obj", "garment.obj"}, {"previews", *previews}};
   if (draped) {

@@ -8,6 +8,7 @@
 #include "geometry/cutfile/dxf_aama_writer.h"
 #include "geometry/cutfile/svg_writer.h"
 #include "geometry/design/render_piece_image.h"
+#include "geometry/garment/flat_pieces.h"
 #include "host/common/atomic_file.h"
 #include "host/pipeline/garment_files.h"
 #include "host/pipeline/internal/gamut_report.h"
@@ -58,7 +59,10 @@ Status stage_outputs(PipelineState& ps) {
 
   // The 3D garment again, now with its print: the pieces packed into one texture, OBJ + MTL.
   if (ps.garment_is_3d && ps.garment) {
-    auto tex = write_textured_garment(out, "garment", ps.pattern, *ps.garment, *ps.renderer, ps.job.print.preview_dpi);
+    // Without the pieces printed flat (joined to no other piece): they are not part of it.
+    const std::vector<int> flat = ps.body ? geometry::unjoined_pieces(ps.pattern) : std::vector<int>{};
+    const geometry::Garment worn = flat.empty() ? *ps.garment : geometry::garment_without(*ps.garment, flat);
+    auto tex = write_textured_garment(out, "garment", ps.pattern, worn, *ps.renderer, ps.job.print.preview_dpi);
     if (!tex) return fail(tex.error());
     auto& files = ps.report["garment"]["files"];
     files["obj"] = tex->obj;
@@ -69,10 +73,10 @@ Status stage_outputs(PipelineState& ps) {
     files["texture_width_px"] = tex->texture_width_px;
     files["texture_height_px"] = tex->texture_height_px;
     // The garment wearing its print, as the sewn previews see it.
-    auto worn = write_garment_print_previews(out, "garment-print-", *ps.garment, ps.body ? &ps.body->mesh() : nullptr,
-                                             *ps.renderer, kPrintPreviewDpi);
-    if (!worn) return fail(worn.error());
-    files["print_previews"] = *worn;
+    auto print_previews = write_garment_print_previews(
+        out, "garment-print-", worn, ps.body ? &ps.body->mesh() : nullptr, *ps.renderer, kPrintPreviewDpi);
+    if (!print_previews) return fail(print_previews.error());
+    files["print_previews"] = *print_previews;
   }
 
   // Cut contours exactly where the pieces were printed on the roll.
@@ -109,7 +113,8 @@ Status stage_outputs(PipelineState& ps) {
   if (checks && checks->is_object() && checks->contains("unsewn_pieces") && (*checks)["unsewn_pieces"].is_array())
     for (const nlohmann::json& name : (*checks)["unsewn_pieces"])
       if (name.is_string())
-        warnings.push_back("garment: piece '" + name.get<std::string>() + "' hangs unsewn in the 3D garment");
+        warnings.push_back("garment: piece '" + name.get<std::string>() +
+                           "' is joined to no other piece: printed flat, not part of the 3D garment");
   // The draped garment only gives previews (unless the job takes its correspondence): a drape
   // that folded through itself does not fail the job, but its pictures are not to be trusted.
   if (report.contains("garment") && report["garment"].contains("drape")) {

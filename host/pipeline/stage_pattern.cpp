@@ -12,6 +12,7 @@
 #include "geometry/samples/sizes.h"
 #include "host/pipeline/internal/pipeline_state.h"
 #include "host/pipeline/internal/plan_steps.h"
+#include "host/pipeline/job_stitch_check.h"
 
 namespace tp::host::internal {
 
@@ -106,11 +107,7 @@ Status stage_pattern(PipelineState& ps) {
   }
   // A body asks for a sewn garment: a pattern with nothing to sew would only wrap pieces round it.
   if (g.body_kind != "none" && !g.garment_mesh && g.sample.empty() && ps.pattern.stitches.empty())
-    return fail(ErrorCode::kValidation,
-                "pattern '" + ps.pattern.name + "': no stitches to sew it on the body with (the pattern has none" +
-                    std::string(g.stitches == "suggest" ? " and no suggestion scored " + std::to_string(g.suggest_min_score).substr(0, 4) + " or more"
-                                                        : "; set /garment/stitches to \"suggest\" or give /garment/stitches_file") +
-                    "); a job without a body prints it flat");
+    return fail(ErrorCode::kValidation, no_stitches_message(g, ps.pattern.name));
 
   nlohmann::json pieces = nlohmann::json::array();
   for (const auto& p : ps.pattern.pieces) pieces.push_back(p.name);

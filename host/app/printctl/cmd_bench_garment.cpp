@@ -8,6 +8,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,7 @@
 #include "geometry/garment/align_to_body.h"
 #include "geometry/garment/distortion.h"
 #include "geometry/garment/fit_checks.h"
+#include "geometry/garment/flat_pieces.h"
 #include "geometry/mesh/mesh_pattern.h"
 #include "geometry/pattern/import/garmentcode.h"
 #include "geometry/pattern/import/load_pattern.h"
@@ -111,15 +113,42 @@ void bench_one(const std::string& name, geometry::Pattern pattern, const geometr
     suggested = geometry::accept_suggestions(pattern, geometry::suggest_stitches(pattern, so), a.min_score);
   }
   if (pattern.stitches.empty()) return error_line("no stitches (none in the pattern, none suggested)");
-  auto al = geometry::align_to_body(pattern, body);
-  if (!al) return error_line(al.error().message);
+  bool aligned = false;
+  // As the pipeline: pieces no stitch joins are left out of the garment (printed flat).
+  const std::vector<int> flat = geometry::unjoined_pieces(pattern);
   const auto t0 = std::chrono::steady_clock::now();
   geometry::SewOptions o = a.sew;
   o.target_edge_mm = geometry::target_edge_for_vertex_count(pattern, a.vertices);
   o.threads = a.threads;
   geometry::SewStats stats;
-  auto g = geometry::sew_garment(pattern, body, o, &stats);
-  if (!g) return error_line(g.error().what());
+  std::optional<geometry::Garment> g;
+  if (flat.empty()) {
+    auto al = geometry::align_to_body(pattern, body);
+    if (!al) return error_line(al.error().message);
+    aligned = al->moved;
+    auto sewn = geometry::sew_garment(pattern, body, o, &stats);
+    if (!sewn) return error_line(sewn.error().what());
+    g = std::move(*sewn);
+  } else {
+    geometry::TriangulateOptions to;
+    to.target_edge_mm = o.target_edge_mm;
+    auto meshes = geometry::mesh_pattern(pattern, to);
+    if (!meshes) return error_line(meshes.error().what());
+    geometry::PatternPart part = geometry::pattern_without(pattern, *meshes, flat);
+    auto al = geometry::align_to_body(part.pattern, body);
+    if (!al) return error_line(al.error().message);
+    aligned = al->moved;
+    auto sewn = geometry::sew_garment(part.pattern, part.meshes, body, o, &stats);
+    if (!sewn) return error_line(sewn.error().what());
+    std::vector<std::vector<double>> gaps(pattern.stitches.size());
+    for (size_t k = 0; k < part.stitches.size() && k < stats.stitch_gap_mm.size(); ++k)
+      gaps[static_cast<size_t>(part.stitches[k])] = std::move(stats.stitch_gap_mm[k]);
+    stats.stitch_gap_mm = std::move(gaps);
+    auto whole = geometry::garment_with_flat_pieces(pattern, *meshes, part, *sewn);
+    if (!whole) return error_line(whole.error().what());
+    // The figures, files and drape are of the 3D garment, without the flat pieces.
+    g = geometry::garment_without(*whole, flat);
+  }
   const double seconds = since(t0);
   geometry::DistortionReport r = geometry::measure_distortion(pattern, *g, &body);
   geometry::FitReport fit = geometry::check_fit(pattern, *g, &body, stats.stitch_gap_mm, a.limits);
@@ -156,15 +185,18 @@ void bench_one(const std::string& name, geometry::Pattern pattern, const geometr
   (fit.pass ? tally.pass : tally.fail)++;
   std::string failed;
   for (const auto& f : fit.failures) failed += (failed.empty() ? "" : ",") + f.check;
-  std::printf("garment=%s vertices=%d stitches=%zu suggested=%d stitch_gap_max_mm=%.2f stitch_gap_p95_mm=%.2f "
-              "self_intersections=%d inside_body=%d body_distance_p50_mm=%.1f body_distance_p95_mm=%.1f off_body=%.4f unsewn=%zu "
-              "strain_mean=%.4f strain_p95=%.4f seam_len_diff_max=%.4f aligned=%s seconds=%.2f drape_seconds=%.2f drape_self_intersections=%d drape_inside_body=%d drape_strain_p95=%.4f "
-              "gathered_fraction=%.3f checks=%s%s%s\n",
-              name.c_str(), r.vertices, pattern.stitches.size(), suggested, fit.stitch_gap_max_mm, fit.stitch_gap_p95_mm,
-              fit.self_intersections, fit.inside_body, fit.body_distance_p50_mm, fit.body_distance_p95_mm, fit.off_body, fit.unsewn_pieces.size(),
-              r.strain_mean, r.strain_p95, r.seam_len_diff_max, al->moved ? "yes" : "no", seconds,
-              drape_seconds, drape_self, drape_inside, drape_strain_p95, gathered_fraction(r),
-              fit.pass ? "pass" : "fail", failed.empty() ? "" : " failed=", failed.c_str());
+  std::printf(
+      "garment=%s vertices=%d stitches=%zu suggested=%d stitch_gap_max_mm=%.2f stitch_gap_p95_mm=%.2f "
+      "self_intersections=%d inside_body=%d body_distance_p50_mm=%.1f body_distance_p95_mm=%.1f off_body=%.4f "
+      "unsewn=%zu "
+      "strain_mean=%.4f strain_p95=%.4f seam_len_diff_max=%.4f aligned=%s seconds=%.2f drape_seconds=%.2f "
+      "drape_self_intersections=%d drape_inside_body=%d drape_strain_p95=%.4f "
+      "gathered_fraction=%.3f checks=%s%s%s\n",
+      name.c_str(), r.vertices, pattern.stitches.size(), suggested, fit.stitch_gap_max_mm, fit.stitch_gap_p95_mm,
+      fit.self_intersections, fit.inside_body, fit.body_distance_p50_mm, fit.body_distance_p95_mm, fit.off_body,
+      fit.unsewn_pieces.size(), r.strain_mean, r.strain_p95, r.seam_len_diff_max, aligned ? "yes" : "no", seconds,
+      drape_seconds, drape_self, drape_inside, drape_strain_p95, gathered_fraction(r), fit.pass ? "pass" : "fail",
+      failed.empty() ? "" : " failed=", failed.c_str());
   for (const auto& f : fit.failures) std::printf("  %s: %s (look at %s_%s.png)\n", f.check.c_str(), f.message.c_str(), name.c_str(), f.view.c_str());
   std::fflush(stdout);
 }

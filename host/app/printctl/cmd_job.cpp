@@ -10,13 +10,14 @@
 #include <string>
 #include <vector>
 
+#include "device/model/printer_model_file.h"
 #include "host/app/printctl/commands.h"
 #include "host/app/printctl/progress_view.h"
 #include "host/common/atomic_file.h"
 #include "host/common/failure_report.h"
 #include "host/job/manifest.h"
 #include "host/job/package.h"
-#include "device/model/printer_model_file.h"
+#include "host/pipeline/job_stitch_check.h"
 #include "host/pipeline/printer_model.h"
 #include "host/pipeline/run_job.h"
 #include "host/session/sim_reexec.h"
@@ -36,12 +37,19 @@ void add_limit_option(CLI::App* cmd) {
 }
 
 // Opens and validates a package under the --limit values; a zip is unpacked into `scratch`.
-Result<Job> open_job(const fs::path& path, const fs::path& scratch) {
+// `sewable`: also refuse a job with a body whose pattern has no stitches (run leaves that to its
+// pattern stage, which writes the refusal into report.json).
+Result<Job> open_job(const fs::path& path, const fs::path& scratch, bool sewable = true) {
   for (const auto& l : g_limit_specs)
     if (auto st = set_limit(g_limits, l); !st) return fail(st.error());
   auto pkg = JobPackage::open(path, scratch, g_limits);
   if (!pkg) return fail(pkg.error());
-  return load_job(*pkg);
+  auto job = load_job(*pkg);
+  if (!job) return job;
+  // As printd's intake: a job to be sewn on a body needs stitches (read while the files are here).
+  if (sewable)
+    if (auto st = check_job_stitches(*job); !st) return fail(st.error());
+  return job;
 }
 
 [[noreturn]] void die(const Error& e, int code) {
@@ -107,7 +115,7 @@ void register_job_commands(CLI::App& app) {
     // A zip job is unpacked inside the output folder, afresh on every run.
     std::error_code ec;
     fs::remove_all(out / ".package", ec);
-    auto job = open_job(run_path, out / ".package");
+    auto job = open_job(run_path, out / ".package", false);
     if (!job) die(job.error(), 1);
     // The simulated printer is printsim: run this very command again under it, so the job goes
     // through the real USB and GPIO drivers to the emulated devices.

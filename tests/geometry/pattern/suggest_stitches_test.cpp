@@ -66,8 +66,44 @@ TEST(SuggestStitches, PenelopeSkirtDartsSidesAndCentreBack) {
   EXPECT_TRUE(got.count("back_r.e4 <-> front.e2")) << "left side seam";
   EXPECT_TRUE(got.count("back_l.e4 <-> front.e2_mirror")) << "right side seam";
   EXPECT_TRUE(got.count("back_l.e0 <-> back_r.e0")) << "centre back";
-  // Waist segments between darts are level edges with nothing but their length in common.
-  for (const std::string& s : got) EXPECT_EQ(s.find("waistband"), std::string::npos) << s;
+  // Waist segments between darts are level edges with nothing but their length in common: no
+  // two of them are sewn to each other, only to the waistband.
+  for (const std::string& s : got)
+    if (s.find("waistband") == std::string::npos) EXPECT_EQ(s.find("front.e3"), std::string::npos) << s;
+}
+
+TEST(SuggestStitches, PenelopeWaistbandGoesRoundTheWholeWaistFromTheCentreBack) {
+  auto r = load_freesewing_svg(tp::test::shared_data_dir() / "freesewing/penelope-cisFemaleAdult34.svg");
+  ASSERT_TRUE(r.has_value()) << r.error().what();
+  auto sug = suggest_stitches(*r);
+  const StitchSuggestion* band = nullptr;
+  for (const auto& s : sug)
+    if (s.reason.rfind("band", 0) == 0) band = &s;
+  ASSERT_NE(band, nullptr) << "the waistband is not sewn";
+  EXPECT_GE(band->score, SuggestOptions{}.min_score);
+  // The waist between the darts: three segments per back half, five across the front.
+  ASSERT_EQ(band->stitches.size(), 11u) << band->reason;
+  std::set<std::string> waist;
+  double at_mm = 0;
+  for (const Stitch& st : band->stitches) {
+    EXPECT_EQ(side(*r, st.a), "waistband.e0");
+    EXPECT_NEAR(st.a.from_mm, at_mm, 1e-9) << "spans of the band follow each other";
+    at_mm = st.a.to_mm;
+    waist.insert(side(*r, st.b));
+  }
+  EXPECT_LT(band->stitches.back().a.to_mm, 0) << "the last span runs to the band's end";
+  EXPECT_EQ(waist,
+            (std::set<std::string>{"back_l.e5", "back_l.e8", "back_l.e11", "back_r.e5", "back_r.e8", "back_r.e11",
+                                   "front.e3", "front.e6", "front.e9", "front.e6_mirror", "front.e3_mirror"}));
+  // The band opens at the centre back (between the mirror copies), where the zip is.
+  const std::string first = side(*r, band->stitches.front().b), last = side(*r, band->stitches.back().b);
+  EXPECT_TRUE((first == "back_l.e11" && last == "back_r.e11") || (first == "back_r.e11" && last == "back_l.e11"))
+      << first << " .. " << last;
+  // The middle of the band is at the centre front.
+  double front_from = 0, front_to = 0;
+  for (const Stitch& st : band->stitches)
+    if (side(*r, st.b) == "front.e9") front_from = st.a.from_mm, front_to = st.a.to_mm;
+  EXPECT_NEAR((front_from + front_to) / 2, 757.58 / 2, 5);
 }
 
 TEST(SuggestStitches, DxfSkirtSideSeamsAcrossATurnPoint) {

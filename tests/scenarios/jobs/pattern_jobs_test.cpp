@@ -61,6 +61,21 @@ TEST(PatternJobs, ThreeDJobWithoutStitchesIsRefusedWithTheReason) {
   EXPECT_FALSE(rep.contains("garment"));
 }
 
+TEST(PatternJobs, ValidateRefusesAThreeDJobWithoutStitchesAndPassesAFlatOrSuggestedOne) {
+  const fs::path dir = scratch_dir("pattern-validate");
+  auto validate = [](const fs::path& job) {
+    return run_command({(bin_dir() / "printctl").string(), "validate", job.string()});
+  };
+  auto refused = validate(teagan_job(dir / "body", json::object(), true));
+  EXPECT_NE(refused.exit_code, 0);
+  EXPECT_NE(refused.output.find("/garment: pattern 'teagan': no stitches to sew it on the body"), std::string::npos)
+      << refused.output;
+  auto flat = validate(teagan_job(dir / "flat", json::object(), false));
+  EXPECT_EQ(flat.exit_code, 0) << flat.output;
+  auto suggest = validate(teagan_job(dir / "suggest", {{"stitches", "suggest"}}, true));
+  EXPECT_EQ(suggest.exit_code, 0) << suggest.output;
+}
+
 TEST(PatternJobs, FlatJobWithoutStitchesStillPrints) {
   const fs::path dir = scratch_dir("pattern-flat");
   auto r = run_job(teagan_job(dir, json::object(), false), dir / "out");
