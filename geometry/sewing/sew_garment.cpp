@@ -148,12 +148,16 @@ Result<Garment> sew_garment(const Pattern& pattern, const PatternMesh& meshes, c
   const int iterations_planned = std::max(1, options.sewing_iterations + options.relax_iterations);
   if (options.on_progress)
     params.on_iteration = [&] { options.on_progress(std::min(1.0, ++iterations_done / double(iterations_planned))); };
-  const bool two_level = options.coarse_factor >= 1.5;
+  // Two levels by default for XPBD sewing (a substep costs in proportion to the vertices while
+  // the substeps needed do not depend on them), one for ARAP (whose coarse level tangled).
+  const double coarse_factor =
+      options.coarse_factor >= 0 ? options.coarse_factor : (options.solver == SewSolver::kXpbd ? 2.0 : 0.0);
+  const bool two_level = coarse_factor >= 1.5;
   if (two_level) {
     // Coarse level: the whole sewing on a coarser mesh, then its shape carried over.
     SewOptions coarse_opt = options;
     coarse_opt.on_progress = {};  // the fine level reports; the coarse run is its first part
-    coarse_opt.target_edge_mm = options.target_edge_mm * options.coarse_factor;
+    coarse_opt.target_edge_mm = options.target_edge_mm * coarse_factor;
     coarse_opt.coarse_factor = 0;
     SewStats coarse_stats;
     auto coarse = sew_garment(pattern, body, coarse_opt, &coarse_stats, cancel);

@@ -9,7 +9,8 @@
 #include <atomic>
 #include <cmath>
 #include <limits>
-#include <thread>
+
+#include "geometry/common/thread_pool.h"
 
 namespace tp::geometry::internal {
 namespace {
@@ -17,18 +18,23 @@ namespace {
 // Vertices whose interpolated distance exceeds the clearance by this many grid steps are free.
 constexpr double kCullCells = 0.4;
 
-// Runs fn(begin, end, slot) over [0, n) split across `threads` threads (slot = thread index).
+// Runs fn(begin, end, slot) over [0, n) split into one range per pool thread (slot = range
+// index), the same ranges whichever worker runs them.
 template <class Fn>
-void parallel_for(int n, int threads, Fn&& fn) {
-  threads = std::clamp(threads, 1, 8);
-  if (threads == 1 || n < 256) { fn(0, n, 0); return; }
-  std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t)
-    pool.emplace_back(fn, static_cast<int>(static_cast<long>(n) * t / threads),
-                      static_cast<int>(static_cast<long>(n) * (t + 1) / threads), t);
-  fn(0, static_cast<int>(static_cast<long>(n) / threads), 0);
-  for (auto& th : pool) th.join();
+void parallel_for(int n, ThreadPool& pool, Fn&& fn) {
+  const int ranges = pool.size();
+  if (ranges == 1 || n < 256) {
+    fn(0, n, 0);
+    return;
+  }
+  pool.parallel_for(ranges, [&](int t, int) {
+    fn(static_cast<int>(static_cast<long>(n) * t / ranges), static_cast<int>(static_cast<long>(n) * (t + 1) / ranges),
+       t);
+  });
 }
+
+int push_out(std::vector<Vec3>& x, const BodySdf& body, double clearance_mm, ThreadPool& pool,
+             const std::vector<Vec3>* fallback);
 
 // Per-triangle constants: area and G (3x2) with F = [x0 x1 x2] G.
 struct TriConst {
@@ -83,8 +89,16 @@ void closest_rotation(Vec3 f0, Vec3 f1, Vec3& r0, Vec3& r1) {
 
 int push_out_of_body(std::vector<Vec3>& x, const BodySdf& body, double clearance_mm, int threads,
                       const std::vector<Vec3>* fallback) {
+  ThreadPool pool(std::clamp(threads, 1, 8));
+  return push_out(x, body, clearance_mm, pool, fallback);
+}
+
+namespace {
+
+int push_out(std::vector<Vec3>& x, const BodySdf& body, double clearance_mm, ThreadPool& pool,
+             const std::vector<Vec3>* fallback) {
   std::atomic<int> moved{0};
-  parallel_for(static_cast<int>(x.size()), threads, [&](int b, int e, int) {
+  parallel_for(static_cast<int>(x.size()), pool, [&](int b, int e, int) {
     int count = 0;
     for (int i = b; i < e; ++i) {
       // The interpolated grid is within a cell of the truth: skip clearly free vertices.
@@ -104,6 +118,8 @@ int push_out_of_body(std::vector<Vec3>& x, const BodySdf& body, double clearance
   });
   return moved.load();
 }
+
+}  // namespace
 
 Result<ClothStats> relax_cloth(ClothMesh& cloth, const BodySdf& body, const ClothParams& p, const CancelToken* cancel) {
   const int n = static_cast<int>(cloth.x_mm.size());
@@ -157,6 +173,7 @@ Result<ClothStats> relax_cloth(ClothMesh& cloth, const BodySdf& body, const Clot
   if (solver.info() != Eigen::Success) return fail(ErrorCode::kSewing, "cloth system could not be factorised");
 
   const int threads = std::clamp(p.threads, 1, 8);
+  ThreadPool pool(threads);
   std::vector<Eigen::MatrixXd> rhs_part(threads, Eigen::MatrixXd::Zero(n, 3));
   std::vector<double> energy_part(threads, 0.0);
   Eigen::MatrixXd rhs(n, 3), sol(n, 3);
@@ -165,7 +182,7 @@ Result<ClothStats> relax_cloth(ClothMesh& cloth, const BodySdf& body, const Clot
   // Local step at x: best rotation per triangle into per-thread right-hand sides; returns the
   // membrane energy sum_t A_t |F_t - R_t|^2.
   const auto local_step = [&]() {
-    parallel_for(nf, threads, [&](int b, int e, int slot) {
+    parallel_for(nf, pool, [&](int b, int e, int slot) {
       Eigen::MatrixXd& r = rhs_part[slot];
       r.setZero();
       double energy = 0;
@@ -237,16 +254,13 @@ Result<ClothStats> relax_cloth(ClothMesh& cloth, const BodySdf& body, const Clot
       rhs(i, 2) += w[i] * x[i].z;
     }
     // Global step: the three coordinates are independent solves with one factorisation.
-    std::thread zsolve([&] { sol.col(2) = solver.solve(rhs.col(2)); });
-    sol.col(0) = solver.solve(rhs.col(0));
-    sol.col(1) = solver.solve(rhs.col(1));
-    zsolve.join();
+    pool.parallel_for(3, [&](int c, int) { sol.col(c) = solver.solve(rhs.col(c)); });
 
     last_plain = plain.empty() ? x : plain;
     plain.resize(n);
     for (int i = 0; i < n; ++i) plain[i] = Vec3{sol(i, 0), sol(i, 1), sol(i, 2)};
     // Contact: nothing stays inside the body or closer than the clearance.
-    stats.contacts = push_out_of_body(plain, body, p.clearance_mm, threads, &last_plain);
+    stats.contacts = push_out(plain, body, p.clearance_mm, pool, &last_plain);
     double move = 0;
     for (int i = 0; i < n; ++i) {
       move = std::max(move, norm(plain[i] - x[i]));

@@ -5,15 +5,19 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <thread>
 
 namespace tp::geometry::internal {
 namespace {
 
-// A dense spatial hash (Teschner et al. 2003): entries counted into a fixed table by cell hash.
+// A dense spatial hash (Teschner et al. 2003): entries counted into a fixed table by cell hash,
+// in buffers kept from the last search.
 class SpatialHash {
  public:
-  SpatialHash(double cell_mm, size_t entries) : cell_(cell_mm), start_(std::max<size_t>(entries * 2, 1024) + 1, 0) {}
+  SpatialHash(double cell_mm, size_t entries, SelfCollisionScratch::Hash& buf) : cell_(cell_mm), b_(buf) {
+    size_t slots = 1024;
+    while (slots < entries * 2) slots *= 2;
+    b_.start.assign(slots + 1, 0);
+  }
 
   std::array<int, 3> cell(Vec3 p) const {
     return {static_cast<int>(std::floor(p.x / cell_)), static_cast<int>(std::floor(p.y / cell_)),
@@ -23,26 +27,29 @@ class SpatialHash {
     const uint64_t h = (static_cast<uint64_t>(static_cast<uint32_t>(i)) * 92837111u) ^
                        (static_cast<uint64_t>(static_cast<uint32_t>(j)) * 689287499u) ^
                        (static_cast<uint64_t>(static_cast<uint32_t>(k)) * 283923481u);
-    return static_cast<size_t>(h % (start_.size() - 1));
+    return static_cast<size_t>((h ^ (h >> 29)) & (b_.start.size() - 2));
   }
   // Two passes: count() every entry's cells, then fill() them in the same order.
-  void count(size_t s) { ++start_[s]; }
+  void count(size_t s) { ++b_.start[s]; }
   void finish_counts() {
     size_t sum = 0;
-    for (auto& c : start_) { size_t v = c; c = sum; sum += v; }
-    ids_.assign(sum, 0);
-    fill_ = start_;
+    for (auto& c : b_.start) {
+      size_t v = c;
+      c = sum;
+      sum += v;
+    }
+    b_.ids.resize(sum);
+    b_.fill.assign(b_.start.begin(), b_.start.end());
   }
-  void fill(size_t s, int id) { ids_[fill_[s]++] = id; }
+  void fill(size_t s, int id) { b_.ids[b_.fill[s]++] = id; }
   template <class Fn>
   void visit(size_t s, Fn&& fn) const {
-    for (size_t k = start_[s]; k < start_[s + 1]; ++k) fn(ids_[k]);
+    for (size_t k = b_.start[s]; k < b_.start[s + 1]; ++k) fn(b_.ids[k]);
   }
 
  private:
   double cell_;
-  std::vector<size_t> start_, fill_;
-  std::vector<int> ids_;
+  SelfCollisionScratch::Hash& b_;
 };
 
 // Closest point to p on triangle (a, b, c) as barycentric weights (Ericson, Real-Time Collision
@@ -97,28 +104,39 @@ void for_cells(const SpatialHash& h, Vec3 lo, Vec3 hi, Fn&& fn) {
       for (int k = a[2]; k <= b[2]; ++k) fn(h.slot(i, j, k));
 }
 
-// Runs fn(begin, end, list) over `threads` ranges of [0, n), each into its own list, and appends
-// the lists to `out` in range order.
+// Runs fn(begin, end, list, worker) over fixed chunks of [0, n) on the pool, each chunk into its
+// own list, and appends the lists to `out` in chunk order: the result does not depend on the
+// thread count.
 template <class T, class Fn>
-void in_ranges(size_t n, int threads, std::vector<T>& out, Fn&& fn) {
-  threads = std::clamp(threads, 1, 8);
-  if (threads == 1 || n < 2048) {
-    fn(0, n, out);
+void in_chunks(size_t n, ThreadPool* pool, std::vector<std::vector<T>>& parts, std::vector<T>& out, Fn&& fn) {
+  constexpr size_t kChunk = 1024;
+  const int chunks = static_cast<int>((n + kChunk - 1) / kChunk);
+  if (pool == nullptr || pool->size() == 1 || chunks <= 1) {
+    fn(0, n, out, 0);
     return;
   }
-  std::vector<std::vector<T>> parts(threads);
-  std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t) pool.emplace_back([&, t] { fn(n * t / threads, n * (t + 1) / threads, parts[t]); });
-  fn(0, n / threads, parts[0]);
-  for (auto& th : pool) th.join();
-  for (auto& part : parts) out.insert(out.end(), part.begin(), part.end());
+  if (parts.size() < static_cast<size_t>(chunks)) parts.resize(chunks);
+  pool->parallel_for(chunks, [&](int c, int worker) {
+    parts[c].clear();
+    fn(c * kChunk, std::min(n, (c + 1) * kChunk), parts[c], worker);
+  });
+  for (int c = 0; c < chunks; ++c) out.insert(out.end(), parts[c].begin(), parts[c].end());
 }
 
 }  // namespace
 
 SelfCollisionPairs find_self_collision_pairs(const ClothModel& cloth, const std::vector<Vec3>& x, double margin_mm,
-                                             int threads) {
+                                             ThreadPool* pool, SelfCollisionScratch* scratch) {
   SelfCollisionPairs out;
+  SelfCollisionScratch local;
+  SelfCollisionScratch& sc = scratch ? *scratch : local;
+  const int workers = pool ? pool->size() : 1;
+  const size_t stamp_size = std::max(x.size(), cloth.edges.size());
+  if (sc.stamps.size() < static_cast<size_t>(workers)) sc.stamps.resize(workers), sc.found.resize(workers);
+  for (int w = 0; w < workers; ++w)
+    if (sc.stamps[w].size() != stamp_size) sc.stamps[w].assign(stamp_size, 0);
+  // A query's stamp: this search's two generations (point-triangle, edge-edge) and its index.
+  const uint64_t pt_gen = (++sc.generation) << 32, ee_gen = (++sc.generation) << 32;
   // Vertices of one weld group count as one (seam sides being sewn may meet).
   auto group = [&](int v) { return cloth.weld_group.empty() ? v : cloth.weld_group[v]; };
   // Vertex u is in the seam neighbourhood of v (or v in u's).
@@ -133,15 +151,16 @@ SelfCollisionPairs find_self_collision_pairs(const ClothModel& cloth, const std:
   const Vec3 pad{margin_mm, margin_mm, margin_mm};
 
   // Point-triangle: vertices hashed by cell, each triangle's padded box looked up.
-  SpatialHash vh(cell, x.size());
+  SpatialHash vh(cell, x.size(), sc.vertices);
   for (const Vec3& p : x) { auto c = vh.cell(p); vh.count(vh.slot(c[0], c[1], c[2])); }
   vh.finish_counts();
   for (size_t i = 0; i < x.size(); ++i) { auto c = vh.cell(x[i]); vh.fill(vh.slot(c[0], c[1], c[2]), static_cast<int>(i)); }
   // Visited stamps dedupe a query's hits without sorting (the order stays the cells' order).
   // Ranges of triangles (and of edges below) run on their own threads into their own lists,
   // joined in range order: the pairs and their order do not depend on the thread count.
-  auto point_triangle = [&](size_t f0, size_t f1, std::vector<PointTrianglePair>& pt_out) {
-    std::vector<int> found, stamp_v(x.size(), -1);
+  auto point_triangle = [&](size_t f0, size_t f1, std::vector<PointTrianglePair>& pt_out, int worker) {
+    std::vector<uint64_t>& stamp_v = sc.stamps[worker];
+    std::vector<int>& found = sc.found[worker];
     for (size_t f = f0; f < f1; ++f) {
       const RestTriangle& t = cloth.triangles[f];
       const Vec3 a = x[t.v[0]], b = x[t.v[1]], c = x[t.v[2]];
@@ -150,10 +169,11 @@ SelfCollisionPairs find_self_collision_pairs(const ClothModel& cloth, const std:
       found.clear();
       for_cells(vh, lo - pad, hi + pad, [&](size_t s) {
         vh.visit(s, [&](int v) {
-          if (stamp_v[v] != static_cast<int>(f)) stamp_v[v] = static_cast<int>(f), found.push_back(v);
+          if (stamp_v[v] != (pt_gen | f)) stamp_v[v] = pt_gen | f, found.push_back(v);
         });
       });
-      const Vec3 n = triangle_normal(x, t);
+      Vec3 n{};
+      bool have_normal = false;
       const Vec3 plo = lo - pad, phi = hi + pad;
       for (int v : found) {
         const int gv = group(v);
@@ -164,14 +184,15 @@ SelfCollisionPairs find_self_collision_pairs(const ClothModel& cloth, const std:
         const auto w = closest_on_triangle(x[v], a, b, c);
         const Vec3 q = a * w[0] + b * w[1] + c * w[2];
         if (norm(x[v] - q) >= margin_mm) continue;
+        if (!have_normal) n = triangle_normal(x, t), have_normal = true;
         pt_out.push_back({v, static_cast<int>(f), dot(x[v] - q, n) >= 0 ? 1.0 : -1.0});
       }
     }
   };
-  in_ranges(cloth.triangles.size(), threads, out.point_triangle, point_triangle);
+  in_chunks(cloth.triangles.size(), pool, sc.point_triangle_parts, out.point_triangle, point_triangle);
 
   // Edge-edge: edges hashed into every cell their padded box covers, then paired per cell.
-  SpatialHash eh(cell, cloth.edges.size() * 4);
+  SpatialHash eh(cell, cloth.edges.size() * 4, sc.edges);
   auto edge_box = [&](const std::array<int, 2>& e, Vec3& lo, Vec3& hi) {
     const Vec3 p = x[e[0]], q = x[e[1]];
     lo = Vec3{std::min(p.x, q.x), std::min(p.y, q.y), std::min(p.z, q.z)} - pad * 0.5;
@@ -188,8 +209,9 @@ SelfCollisionPairs find_self_collision_pairs(const ClothModel& cloth, const std:
     edge_box(cloth.edges[k], lo, hi);
     for_cells(eh, lo, hi, [&](size_t s) { eh.fill(s, static_cast<int>(k)); });
   }
-  auto edge_edge = [&](size_t k0, size_t k1, std::vector<EdgeEdgePair>& ee_out) {
-    std::vector<int> found, stamp_e(cloth.edges.size(), -1);
+  auto edge_edge = [&](size_t k0, size_t k1, std::vector<EdgeEdgePair>& ee_out, int worker) {
+    std::vector<uint64_t>& stamp_e = sc.stamps[worker];
+    std::vector<int>& found = sc.found[worker];
     for (size_t k = k0; k < k1; ++k) {
       const auto& ea = cloth.edges[k];
       Vec3 lo, hi;
@@ -197,8 +219,7 @@ SelfCollisionPairs find_self_collision_pairs(const ClothModel& cloth, const std:
       found.clear();
       for_cells(eh, lo, hi, [&](size_t s) {
         eh.visit(s, [&](int o) {
-          if (o > static_cast<int>(k) && stamp_e[o] != static_cast<int>(k))
-            stamp_e[o] = static_cast<int>(k), found.push_back(o);
+          if (o > static_cast<int>(k) && stamp_e[o] != (ee_gen | k)) stamp_e[o] = ee_gen | k, found.push_back(o);
         });
       });
       for (int o : found) {
@@ -218,7 +239,7 @@ SelfCollisionPairs find_self_collision_pairs(const ClothModel& cloth, const std:
       }
     }
   };
-  in_ranges(cloth.edges.size(), threads, out.edge_edge, edge_edge);
+  in_chunks(cloth.edges.size(), pool, sc.edge_edge_parts, out.edge_edge, edge_edge);
   return out;
 }
 

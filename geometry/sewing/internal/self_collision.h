@@ -3,8 +3,10 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <vector>
 
+#include "geometry/common/thread_pool.h"
 #include "geometry/common/vec.h"
 #include "geometry/sewing/internal/cloth_model.h"
 
@@ -29,11 +31,27 @@ struct SelfCollisionPairs {
   std::vector<EdgeEdgePair> edge_edge;
 };
 
+/// Buffers a broad phase reuses from one search to the next (no allocation per search once warm).
+struct SelfCollisionScratch {
+  struct Hash {
+    std::vector<size_t> start, fill;
+    std::vector<int> ids;
+  };
+  Hash vertices, edges;
+  /// Per worker: the query that last visited each primitive (search generation and query index).
+  std::vector<std::vector<uint64_t>> stamps;
+  std::vector<std::vector<int>> found;
+  uint64_t generation = 0;
+  std::vector<std::vector<PointTrianglePair>> point_triangle_parts;
+  std::vector<std::vector<EdgeEdgePair>> edge_edge_parts;
+};
+
 /// Every vertex-triangle and edge-edge pair (sharing no vertex) closer than `margin_mm` at `x`,
 /// found through a spatial hash of cell size about the mean edge, in a fixed order (the same for
-/// any `threads`, which split the queries).
+/// any size of `pool`, which splits the queries; null: the calling thread only). `scratch` (may be
+/// null) keeps the buffers for the next search.
 SelfCollisionPairs find_self_collision_pairs(const ClothModel& cloth, const std::vector<Vec3>& x, double margin_mm,
-                                             int threads = 1);
+                                             ThreadPool* pool = nullptr, SelfCollisionScratch* scratch = nullptr);
 
 /// Pushes every candidate pair found closer than `thickness_mm` (or on the other side than it
 /// was found on) apart to `thickness_mm`, moving the vertices in proportion to their inverse
