@@ -5,6 +5,7 @@
 
 #include "geometry/continuity/continuity.h"
 #include "host/pipeline/internal/order_run.h"
+#include "host/pipeline/order_copy_renderer.h"
 #include "host/pipeline/order_renderer.h"
 #include "host/pipeline/order_reprojection.h"
 
@@ -76,6 +77,41 @@ nlohmann::json reprojection_json(const std::vector<DesignLayerSpec>& base_layers
     out.push_back(std::move(e));
   }
   return out;
+}
+
+// Index of the first personalised layer (a text layer taking fields from the copies); the
+// layer count when none is.
+size_t personal_top_layers(const std::vector<DesignLayerSpec>& design) {
+  for (size_t i = 0; i < design.size(); ++i)
+    if (design[i].type == "text" && !template_fields(design[i].text).empty()) return i;
+  return design.size();
+}
+
+// Whether every layer from `first` up is personalised (they can then be drawn over the rest).
+bool all_personal_from(const std::vector<DesignLayerSpec>& design, size_t first) {
+  for (size_t i = first; i < design.size(); ++i)
+    if (design[i].type != "text" || template_fields(design[i].text).empty()) return false;
+  return true;
+}
+
+// The renderer of a size's layers below the copies' text, without printed labels (each copy
+// prints its own), shared by all the size's copies. `design_report` gets its layer names.
+[[nodiscard]] Result<std::shared_ptr<const geometry::PieceRenderer>> build_size_base(
+    const OrderSizeRun& s, std::vector<DesignLayerSpec> layers, const geometry::CancelToken& cancel,
+    nlohmann::json& design_report) {
+  Job job = s.job;
+  job.design = std::move(layers);
+  if (job.finishing.labels == "inside") job.finishing.labels = "none";
+  nlohmann::json report = nlohmann::json::object();
+  PipelineState bps(job, s.options, cancel, report);
+  bps.pattern = s.ps->pattern;
+  bps.garment = s.ps->garment;
+  bps.garment_is_3d = s.ps->garment_is_3d;
+  bps.body = s.ps->body;
+  bps.measurements = s.ps->measurements;
+  if (auto st = stage_design(bps); !st) return fail(st.error().with_context("shared layers"));
+  design_report = report["design"];
+  return std::shared_ptr<const geometry::PieceRenderer>(std::move(bps.renderer));
 }
 
 }  // namespace
@@ -150,10 +186,12 @@ Status stage_order_design(PipelineState& ps) {
   std::vector<OrderPiece> pieces;
   nlohmann::json sizes = nlohmann::json::array(), copies = nlohmann::json::array();
   int copy_no = 0;
-  // Copies are personalised when a text layer takes fields from them: each then has its own renderer.
-  bool personal = false;
-  for (const DesignLayerSpec& l : ps.job.design)
-    personal = personal || (l.type == "text" && !template_fields(l.text).empty());
+  // Copies are personalised when a text layer takes fields from them. When those layers are the
+  // design's top layers, each size renders the others once (its base) and every copy adds only
+  // its text and labels over it; otherwise each copy has a renderer of all layers.
+  const size_t top = personal_top_layers(ps.job.design);
+  const bool personal = top < ps.job.design.size();
+  const bool layered = personal && top > 0 && all_personal_from(ps.job.design, top);
   double x_offset_mm = 0;
   for (size_t si = 0; si < run.sizes.size(); ++si) {
     OrderSizeRun& s = *run.sizes[si];
@@ -181,6 +219,14 @@ Status stage_order_design(PipelineState& ps) {
                                    {"layers", reprojection_json(ps.job.design, layers, report_map)}};
     std::shared_ptr<OrderCopyRun> first;
     std::shared_ptr<const geometry::PieceRenderer> size_renderer;
+    std::shared_ptr<const geometry::PieceRenderer> base_renderer;
+    nlohmann::json base_design_report;
+    if (layered) {
+      auto b = build_size_base(s, std::vector<DesignLayerSpec>(layers.begin(), layers.begin() + static_cast<long>(top)),
+                               ps.cancel, base_design_report);
+      if (!b) return fail(b.error().with_context("order size '" + s.spec.size + "'"));
+      base_renderer = std::move(*b);
+    }
     for (int q = 0; q < s.spec.quantity; ++q) {
       auto c = std::make_shared<OrderCopyRun>();
       c->copy = ++copy_no;
@@ -188,9 +234,12 @@ Status stage_order_design(PipelineState& ps) {
       if (!order.copies.empty()) c->fields = order.copies[static_cast<size_t>(c->copy - 1)];
       c->job = s.job;
       c->job.name = ps.job.name + " " + std::to_string(c->copy) + "/" + std::to_string(total);
-      c->job.design = layers;
-      for (DesignLayerSpec& l : c->job.design)
+      std::vector<DesignLayerSpec> filled = layers;
+      for (DesignLayerSpec& l : filled)
         if (l.type == "text") l.text = fill_template(l.text, c->fields);
+      // A layered copy builds only its text layers (over the size's base).
+      c->job.design = filled;
+      if (layered) c->job.design.erase(c->job.design.begin(), c->job.design.begin() + static_cast<long>(top));
       std::shared_ptr<const geometry::PieceRenderer> renderer;
       if (first && !personal) {
         // Copies that differ in nothing print the same pieces: they share the size's renderer
@@ -211,6 +260,13 @@ Status stage_order_design(PipelineState& ps) {
         if (auto st = stage_design(*c->ps); !st)
           return fail(st.error().with_context("order size '" + s.spec.size + "' copy " + std::to_string(c->copy)));
         renderer = std::shared_ptr<const geometry::PieceRenderer>(std::move(c->ps->renderer));
+        if (layered) {
+          renderer = std::make_shared<OrderCopyRenderer>(base_renderer, renderer);
+          // The copy prints every layer: the base's, then its own.
+          nlohmann::json names = base_design_report["layers"];
+          for (const auto& n : c->report["design"]["layers"]) names.push_back(n);
+          c->report["design"]["layers"] = std::move(names);
+        }
         // The copy's own pattern and garment are no longer needed: the renderer keeps what it samples.
         size_renderer = renderer;
       }
@@ -256,7 +312,7 @@ Status stage_order_design(PipelineState& ps) {
       nlohmann::json fields = nlohmann::json::object();
       for (const auto& [k, v] : c->fields) fields[k] = v;
       nlohmann::json texts = nlohmann::json::array();
-      for (const DesignLayerSpec& l : c->job.design)
+      for (const DesignLayerSpec& l : filled)
         if (l.type == "text") texts.push_back(l.text);
       copies.push_back({{"copy", c->copy},
                         {"size", s.spec.size},
