@@ -116,7 +116,11 @@ void read_order(FieldReader o, const JobPackage* pkg, Job& job) {
     if (imported && g.body_kind == "dress_form" && sz.dress_form_mm.empty())
       problems.add(s.pointer(), label + ": the job's body is a dress form, so each size needs body.dress_form");
     if (imported && g.body_kind == "mesh")
-      problems.add(s.pointer(), label + ": orders of an imported pattern take a dress form per size, not a body mesh");
+      problems.add(s.pointer(), label +
+                                    ": orders of an imported pattern take a dress form per size, not a body mesh: "
+                                    "the design is carried between sizes through the dress forms' landmarks "
+                                    "(bust, waist, hip lines and sections), which a body mesh does not give; "
+                                    "give garment.body.dress_form and each size's body.dress_form");
     spec.sizes.push_back(std::move(sz));
   }
   spec.base_size = g.size;

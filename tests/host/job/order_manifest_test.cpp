@@ -132,5 +132,20 @@ TEST_F(OrderManifestTest, ImportedPatternsNeedAPatternAndBodyPerSize) {
   EXPECT_NE(m.find("/order/sizes/1/pattern"), std::string::npos) << m;
 }
 
+TEST_F(OrderManifestTest, AnImportedPatternOnABodyMeshIsRefusedSayingWhy) {
+  write("body.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  const std::string garment = R"({"pattern": "m.json", "size": "M", "body": {"mesh": "body.obj"}})";
+  auto bad = load(R"({"sizes": [{"size": "S", "quantity": 1, "pattern": "s.json"},
+                                {"size": "M", "quantity": 1, "pattern": "m.json"}]})",
+                  garment);
+  ASSERT_FALSE(bad);
+  const std::string& m = bad.error().message;
+  EXPECT_NE(m.find("/order/sizes/0: size 'S': orders of an imported pattern take a dress form per size"),
+            std::string::npos)
+      << m;
+  EXPECT_NE(m.find("landmarks"), std::string::npos) << m;
+  EXPECT_NE(m.find("/order/sizes/1: size 'M'"), std::string::npos) << m;
+}
+
 }  // namespace
 }  // namespace tp::host
