@@ -8,6 +8,7 @@
 #include "host/pipeline/order_copy_renderer.h"
 #include "host/pipeline/order_renderer.h"
 #include "host/pipeline/order_reprojection.h"
+#include "host/pipeline/order_stroke_mapping.h"
 
 namespace tp::host::internal {
 
@@ -114,6 +115,33 @@ bool all_personal_from(const std::vector<DesignLayerSpec>& design, size_t first)
   return std::shared_ptr<const geometry::PieceRenderer>(std::move(bps.renderer));
 }
 
+// Maps every stroke layer of the base design onto size `s` through the pieces under its points
+// (order_stroke_mapping.h), writing the points into `layers` and how they were mapped to `notes`.
+void map_strokes_through_pieces(const std::vector<DesignLayerSpec>& design, const OrderSizeRun& base,
+                                const OrderSizeRun& s, std::vector<DesignLayerSpec>& layers,
+                                std::vector<nlohmann::json>& notes) {
+  if (!base.ps->garment || !s.ps->garment || !base.ps->garment_is_3d || !s.ps->garment_is_3d) return;
+  for (size_t i = 0; i < design.size(); ++i) {
+    if (design[i].type != "stroke") continue;
+    std::vector<geometry::Vec3> pts;
+    for (const auto& p : design[i].points_mm) pts.push_back({p[0], p[1], p[2]});
+    std::string why;
+    auto mapped =
+        map_stroke_through_pieces(pts, {&base.ps->pattern, &*base.ps->garment}, {&s.ps->pattern, &*s.ps->garment}, why);
+    if (!mapped) {
+      notes[i] = {{"mapped_through", "body"}, {"pieces_not_used_because", why}};
+      continue;
+    }
+    nlohmann::json pieces = nlohmann::json::array();
+    for (size_t k = 0; k < mapped->size(); ++k) {
+      const geometry::Vec3 q = (*mapped)[k].point_mm;
+      layers[i].points_mm[k] = {q.x, q.y, q.z};
+      pieces.push_back((*mapped)[k].piece);
+    }
+    notes[i] = {{"mapped_through", "pieces"}, {"point_pieces", pieces}};
+  }
+}
+
 }  // namespace
 
 Status stage_order_pattern(PipelineState& ps) {
@@ -202,6 +230,10 @@ Status stage_order_design(PipelineState& ps) {
       map.emplace(*base.ps->measurements, *s.ps->measurements, graded);
       layers = reproject_layers(ps.job.design, *map);
     }
+    // Strokes go through the pieces they lie on (pattern position graded to this size's piece),
+    // so they cross the same seams; the body mapping above stays where that is not possible.
+    std::vector<nlohmann::json> stroke_notes(layers.size());
+    if (si != run.base) map_strokes_through_pieces(ps.job.design, base, s, layers, stroke_notes);
     nlohmann::json size_report = {{"size", s.spec.size},
                                   {"quantity", s.spec.quantity},
                                   {"base", si == run.base},
@@ -217,6 +249,8 @@ Status stage_order_design(PipelineState& ps) {
     const SizeMapping* report_map = map ? &*map : identity ? &*identity : nullptr;
     size_report["reprojection"] = {{"placement", map ? order.placement : (si == run.base ? "base" : "unmapped")},
                                    {"layers", reprojection_json(ps.job.design, layers, report_map)}};
+    for (size_t i = 0; i < stroke_notes.size(); ++i)
+      if (!stroke_notes[i].is_null()) size_report["reprojection"]["layers"][i].update(stroke_notes[i]);
     std::shared_ptr<OrderCopyRun> first;
     std::shared_ptr<const geometry::PieceRenderer> size_renderer;
     std::shared_ptr<const geometry::PieceRenderer> base_renderer;
@@ -260,6 +294,7 @@ Status stage_order_design(PipelineState& ps) {
         if (auto st = stage_design(*c->ps); !st)
           return fail(st.error().with_context("order size '" + s.spec.size + "' copy " + std::to_string(c->copy)));
         renderer = std::shared_ptr<const geometry::PieceRenderer>(std::move(c->ps->renderer));
+        c->ps->design = {};  // the renderer holds what it samples
         if (layered) {
           renderer = std::make_shared<OrderCopyRenderer>(base_renderer, renderer);
           // The copy prints every layer: the base's, then its own.
@@ -349,11 +384,9 @@ Status stage_order_design(PipelineState& ps) {
   ps.report["design"]["base_size"] = order.base_size;
   ps.report["sizes"] = std::move(sizes);
   ps.report["copies"] = std::move(copies);
-  ps.report["order"] = {{"placement", order.placement},
-                        {"base_size", order.base_size},
-                        {"garments", total},
-                        {"size_count", run.sizes.size()},
-                        {"piece_count", ps.pattern.pieces.size()}};
+  ps.report["order"] = {{"placement", order.placement},   {"marker_budget", order.marker_budget},
+                        {"base_size", order.base_size},   {"garments", total},
+                        {"size_count", run.sizes.size()}, {"piece_count", ps.pattern.pieces.size()}};
   ps.report["piece_count"] = ps.pattern.pieces.size();
   return {};
 }
