@@ -107,6 +107,8 @@ struct OrderSizeSpec {
 struct OrderSpec {
   std::string base_size;           ///< the size the design's 3D coordinates are on
   std::string placement = "body";  ///< "body" (kept on the body, in mm) or "graded"
+  /// "order": job.marker's budget for the order's one marker; "per_garment": that times the garments.
+  std::string marker_budget = "order";
   std::vector<OrderSizeSpec> sizes;
   /// Per copy (sizes in order, each `quantity` times): field name -> text, for text layers.
   std::vector<std::vector<std::pair<std::string, std::string>>> copies;

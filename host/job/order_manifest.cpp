@@ -2,6 +2,7 @@
 // body for imported patterns), placement, and the copies' fields inline or from a CSV asset.
 #include "host/job/internal/order_manifest.h"
 
+#include <algorithm>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -14,6 +15,9 @@ namespace tp::host::internal {
 namespace {
 
 constexpr int kMaxGarments = 1000;
+// The most a marker budget may grow to with "marker_budget": "per_garment" (job.json's own limits).
+constexpr int kMaxIterations = 10'000'000;
+constexpr double kMaxSeconds = 3600;
 
 // Splits one CSV line (RFC 4180 quoting, no newlines inside quotes) into fields.
 std::vector<std::string> csv_fields(const std::string& line, bool& ok) {
@@ -78,7 +82,7 @@ void read_copies_csv(const std::filesystem::path& path, const std::string& point
 }  // namespace
 
 void read_order(FieldReader o, const JobPackage* pkg, Job& job) {
-  o.reject_unknown({"sizes", "base_size", "placement", "copies", "copies_csv"});
+  o.reject_unknown({"sizes", "base_size", "placement", "copies", "copies_csv", "marker_budget"});
   OrderSpec spec;
   Problems& problems = o.problems();
   const GarmentSpec& g = job.garment;
@@ -86,6 +90,7 @@ void read_order(FieldReader o, const JobPackage* pkg, Job& job) {
     problems.add(o.pointer(), "an order needs a pattern or a sample garment to grade, not a garment_mesh");
   const bool imported = g.pattern.has_value();
   if (auto v = o.choice("placement", false, {"body", "graded"})) spec.placement = *v;
+  if (auto v = o.choice("marker_budget", false, {"order", "per_garment"})) spec.marker_budget = *v;
   std::set<std::string> names;
   auto sizes = o.objects("sizes", true);
   if (o.has("sizes") && sizes.empty()) problems.add(o.pointer_of("sizes"), "an order needs at least one size");
@@ -116,7 +121,11 @@ void read_order(FieldReader o, const JobPackage* pkg, Job& job) {
     if (imported && g.body_kind == "dress_form" && sz.dress_form_mm.empty())
       problems.add(s.pointer(), label + ": the job's body is a dress form, so each size needs body.dress_form");
     if (imported && g.body_kind == "mesh")
-      problems.add(s.pointer(), label + ": orders of an imported pattern take a dress form per size, not a body mesh");
+      problems.add(s.pointer(), label +
+                                    ": orders of an imported pattern take a dress form per size, not a body mesh: "
+                                    "the design is carried between sizes through the dress forms' landmarks "
+                                    "(bust, waist, hip lines and sections), which a body mesh does not give; "
+                                    "give garment.body.dress_form and each size's body.dress_form");
     spec.sizes.push_back(std::move(sz));
   }
   spec.base_size = g.size;
@@ -157,6 +166,16 @@ void read_order(FieldReader o, const JobPackage* pkg, Job& job) {
     problems.add(o.pointer_of(spec.copies_csv ? "copies_csv" : "copies"),
                  std::to_string(spec.copies.size()) + " copies for " + std::to_string(spec.garments()) +
                      " garments (the sizes' quantities add up to " + std::to_string(spec.garments()) + ")");
+  // "per_garment": the marker's budget is the job's times the garments, as that many single
+  // jobs would have had between them (the order's one marker then nests with as much search).
+  if (spec.marker_budget == "per_garment" && spec.garments() > 0) {
+    const double n = spec.garments();
+    if (job.marker.iterations > 0)
+      job.marker.iterations =
+          static_cast<int>(std::min(job.marker.iterations * n, static_cast<double>(kMaxIterations)));
+    else
+      job.marker.time_limit_s = std::min(job.marker.time_limit_s * n, kMaxSeconds);
+  }
   job.order = std::move(spec);
 }
 

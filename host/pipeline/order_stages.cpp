@@ -5,8 +5,10 @@
 
 #include "geometry/continuity/continuity.h"
 #include "host/pipeline/internal/order_run.h"
+#include "host/pipeline/order_copy_renderer.h"
 #include "host/pipeline/order_renderer.h"
 #include "host/pipeline/order_reprojection.h"
+#include "host/pipeline/order_stroke_mapping.h"
 
 namespace tp::host::internal {
 
@@ -76,6 +78,68 @@ nlohmann::json reprojection_json(const std::vector<DesignLayerSpec>& base_layers
     out.push_back(std::move(e));
   }
   return out;
+}
+
+// Index of the first personalised layer (a text layer taking fields from the copies); the
+// layer count when none is.
+size_t personal_top_layers(const std::vector<DesignLayerSpec>& design) {
+  for (size_t i = 0; i < design.size(); ++i)
+    if (design[i].type == "text" && !template_fields(design[i].text).empty()) return i;
+  return design.size();
+}
+
+// Whether every layer from `first` up is personalised (they can then be drawn over the rest).
+bool all_personal_from(const std::vector<DesignLayerSpec>& design, size_t first) {
+  for (size_t i = first; i < design.size(); ++i)
+    if (design[i].type != "text" || template_fields(design[i].text).empty()) return false;
+  return true;
+}
+
+// The renderer of a size's layers below the copies' text, without printed labels (each copy
+// prints its own), shared by all the size's copies. `design_report` gets its layer names.
+[[nodiscard]] Result<std::shared_ptr<const geometry::PieceRenderer>> build_size_base(
+    const OrderSizeRun& s, std::vector<DesignLayerSpec> layers, const geometry::CancelToken& cancel,
+    nlohmann::json& design_report) {
+  Job job = s.job;
+  job.design = std::move(layers);
+  if (job.finishing.labels == "inside") job.finishing.labels = "none";
+  nlohmann::json report = nlohmann::json::object();
+  PipelineState bps(job, s.options, cancel, report);
+  bps.pattern = s.ps->pattern;
+  bps.garment = s.ps->garment;
+  bps.garment_is_3d = s.ps->garment_is_3d;
+  bps.body = s.ps->body;
+  bps.measurements = s.ps->measurements;
+  if (auto st = stage_design(bps); !st) return fail(st.error().with_context("shared layers"));
+  design_report = report["design"];
+  return std::shared_ptr<const geometry::PieceRenderer>(std::move(bps.renderer));
+}
+
+// Maps every stroke layer of the base design onto size `s` through the pieces under its points
+// (order_stroke_mapping.h), writing the points into `layers` and how they were mapped to `notes`.
+void map_strokes_through_pieces(const std::vector<DesignLayerSpec>& design, const OrderSizeRun& base,
+                                const OrderSizeRun& s, std::vector<DesignLayerSpec>& layers,
+                                std::vector<nlohmann::json>& notes) {
+  if (!base.ps->garment || !s.ps->garment || !base.ps->garment_is_3d || !s.ps->garment_is_3d) return;
+  for (size_t i = 0; i < design.size(); ++i) {
+    if (design[i].type != "stroke") continue;
+    std::vector<geometry::Vec3> pts;
+    for (const auto& p : design[i].points_mm) pts.push_back({p[0], p[1], p[2]});
+    std::string why;
+    auto mapped =
+        map_stroke_through_pieces(pts, {&base.ps->pattern, &*base.ps->garment}, {&s.ps->pattern, &*s.ps->garment}, why);
+    if (!mapped) {
+      notes[i] = {{"mapped_through", "body"}, {"pieces_not_used_because", why}};
+      continue;
+    }
+    nlohmann::json pieces = nlohmann::json::array();
+    for (size_t k = 0; k < mapped->size(); ++k) {
+      const geometry::Vec3 q = (*mapped)[k].point_mm;
+      layers[i].points_mm[k] = {q.x, q.y, q.z};
+      pieces.push_back((*mapped)[k].piece);
+    }
+    notes[i] = {{"mapped_through", "pieces"}, {"point_pieces", pieces}};
+  }
 }
 
 }  // namespace
@@ -150,10 +214,12 @@ Status stage_order_design(PipelineState& ps) {
   std::vector<OrderPiece> pieces;
   nlohmann::json sizes = nlohmann::json::array(), copies = nlohmann::json::array();
   int copy_no = 0;
-  // Copies are personalised when a text layer takes fields from them: each then has its own renderer.
-  bool personal = false;
-  for (const DesignLayerSpec& l : ps.job.design)
-    personal = personal || (l.type == "text" && !template_fields(l.text).empty());
+  // Copies are personalised when a text layer takes fields from them. When those layers are the
+  // design's top layers, each size renders the others once (its base) and every copy adds only
+  // its text and labels over it; otherwise each copy has a renderer of all layers.
+  const size_t top = personal_top_layers(ps.job.design);
+  const bool personal = top < ps.job.design.size();
+  const bool layered = personal && top > 0 && all_personal_from(ps.job.design, top);
   double x_offset_mm = 0;
   for (size_t si = 0; si < run.sizes.size(); ++si) {
     OrderSizeRun& s = *run.sizes[si];
@@ -164,6 +230,10 @@ Status stage_order_design(PipelineState& ps) {
       map.emplace(*base.ps->measurements, *s.ps->measurements, graded);
       layers = reproject_layers(ps.job.design, *map);
     }
+    // Strokes go through the pieces they lie on (pattern position graded to this size's piece),
+    // so they cross the same seams; the body mapping above stays where that is not possible.
+    std::vector<nlohmann::json> stroke_notes(layers.size());
+    if (si != run.base) map_strokes_through_pieces(ps.job.design, base, s, layers, stroke_notes);
     nlohmann::json size_report = {{"size", s.spec.size},
                                   {"quantity", s.spec.quantity},
                                   {"base", si == run.base},
@@ -179,8 +249,18 @@ Status stage_order_design(PipelineState& ps) {
     const SizeMapping* report_map = map ? &*map : identity ? &*identity : nullptr;
     size_report["reprojection"] = {{"placement", map ? order.placement : (si == run.base ? "base" : "unmapped")},
                                    {"layers", reprojection_json(ps.job.design, layers, report_map)}};
+    for (size_t i = 0; i < stroke_notes.size(); ++i)
+      if (!stroke_notes[i].is_null()) size_report["reprojection"]["layers"][i].update(stroke_notes[i]);
     std::shared_ptr<OrderCopyRun> first;
     std::shared_ptr<const geometry::PieceRenderer> size_renderer;
+    std::shared_ptr<const geometry::PieceRenderer> base_renderer;
+    nlohmann::json base_design_report;
+    if (layered) {
+      auto b = build_size_base(s, std::vector<DesignLayerSpec>(layers.begin(), layers.begin() + static_cast<long>(top)),
+                               ps.cancel, base_design_report);
+      if (!b) return fail(b.error().with_context("order size '" + s.spec.size + "'"));
+      base_renderer = std::move(*b);
+    }
     for (int q = 0; q < s.spec.quantity; ++q) {
       auto c = std::make_shared<OrderCopyRun>();
       c->copy = ++copy_no;
@@ -188,9 +268,12 @@ Status stage_order_design(PipelineState& ps) {
       if (!order.copies.empty()) c->fields = order.copies[static_cast<size_t>(c->copy - 1)];
       c->job = s.job;
       c->job.name = ps.job.name + " " + std::to_string(c->copy) + "/" + std::to_string(total);
-      c->job.design = layers;
-      for (DesignLayerSpec& l : c->job.design)
+      std::vector<DesignLayerSpec> filled = layers;
+      for (DesignLayerSpec& l : filled)
         if (l.type == "text") l.text = fill_template(l.text, c->fields);
+      // A layered copy builds only its text layers (over the size's base).
+      c->job.design = filled;
+      if (layered) c->job.design.erase(c->job.design.begin(), c->job.design.begin() + static_cast<long>(top));
       std::shared_ptr<const geometry::PieceRenderer> renderer;
       if (first && !personal) {
         // Copies that differ in nothing print the same pieces: they share the size's renderer
@@ -211,6 +294,14 @@ Status stage_order_design(PipelineState& ps) {
         if (auto st = stage_design(*c->ps); !st)
           return fail(st.error().with_context("order size '" + s.spec.size + "' copy " + std::to_string(c->copy)));
         renderer = std::shared_ptr<const geometry::PieceRenderer>(std::move(c->ps->renderer));
+        c->ps->design = {};  // the renderer holds what it samples
+        if (layered) {
+          renderer = std::make_shared<OrderCopyRenderer>(base_renderer, renderer);
+          // The copy prints every layer: the base's, then its own.
+          nlohmann::json names = base_design_report["layers"];
+          for (const auto& n : c->report["design"]["layers"]) names.push_back(n);
+          c->report["design"]["layers"] = std::move(names);
+        }
         // The copy's own pattern and garment are no longer needed: the renderer keeps what it samples.
         size_renderer = renderer;
       }
@@ -256,7 +347,7 @@ Status stage_order_design(PipelineState& ps) {
       nlohmann::json fields = nlohmann::json::object();
       for (const auto& [k, v] : c->fields) fields[k] = v;
       nlohmann::json texts = nlohmann::json::array();
-      for (const DesignLayerSpec& l : c->job.design)
+      for (const DesignLayerSpec& l : filled)
         if (l.type == "text") texts.push_back(l.text);
       copies.push_back({{"copy", c->copy},
                         {"size", s.spec.size},
@@ -293,11 +384,9 @@ Status stage_order_design(PipelineState& ps) {
   ps.report["design"]["base_size"] = order.base_size;
   ps.report["sizes"] = std::move(sizes);
   ps.report["copies"] = std::move(copies);
-  ps.report["order"] = {{"placement", order.placement},
-                        {"base_size", order.base_size},
-                        {"garments", total},
-                        {"size_count", run.sizes.size()},
-                        {"piece_count", ps.pattern.pieces.size()}};
+  ps.report["order"] = {{"placement", order.placement},   {"marker_budget", order.marker_budget},
+                        {"base_size", order.base_size},   {"garments", total},
+                        {"size_count", run.sizes.size()}, {"piece_count", ps.pattern.pieces.size()}};
   ps.report["piece_count"] = ps.pattern.pieces.size();
   return {};
 }

@@ -132,5 +132,34 @@ TEST_F(OrderManifestTest, ImportedPatternsNeedAPatternAndBodyPerSize) {
   EXPECT_NE(m.find("/order/sizes/1/pattern"), std::string::npos) << m;
 }
 
+TEST_F(OrderManifestTest, APerGarmentMarkerBudgetGrowsWithTheGarments) {
+  const std::string sizes = R"("sizes": [{"size": "S", "quantity": 2}, {"size": "M", "quantity": 4}])";
+  auto whole = load("{" + sizes + "}");
+  ASSERT_TRUE(whole) << whole.error().message;
+  EXPECT_EQ(whole->order->marker_budget, "order");
+  EXPECT_EQ(whole->marker.iterations, 20000);  // the job's default, for the order's one marker
+  auto per = load("{" + sizes + R"(, "marker_budget": "per_garment"})");
+  ASSERT_TRUE(per) << per.error().message;
+  EXPECT_EQ(per->marker.iterations, 6 * 20000);
+  auto bad = load("{" + sizes + R"(, "marker_budget": "per_piece"})");
+  ASSERT_FALSE(bad);
+  EXPECT_NE(bad.error().message.find("/order/marker_budget"), std::string::npos) << bad.error().message;
+}
+
+TEST_F(OrderManifestTest, AnImportedPatternOnABodyMeshIsRefusedSayingWhy) {
+  write("body.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  const std::string garment = R"({"pattern": "m.json", "size": "M", "body": {"mesh": "body.obj"}})";
+  auto bad = load(R"({"sizes": [{"size": "S", "quantity": 1, "pattern": "s.json"},
+                                {"size": "M", "quantity": 1, "pattern": "m.json"}]})",
+                  garment);
+  ASSERT_FALSE(bad);
+  const std::string& m = bad.error().message;
+  EXPECT_NE(m.find("/order/sizes/0: size 'S': orders of an imported pattern take a dress form per size"),
+            std::string::npos)
+      << m;
+  EXPECT_NE(m.find("landmarks"), std::string::npos) << m;
+  EXPECT_NE(m.find("/order/sizes/1: size 'M'"), std::string::npos) << m;
+}
+
 }  // namespace
 }  // namespace tp::host
