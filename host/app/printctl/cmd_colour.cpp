@@ -96,10 +96,13 @@ void register_colour_commands(CLI::App& app) {
       std::fprintf(stderr, "printctl proof-check: %s\n", r.error().what().c_str());
       throw CLI::RuntimeError(1);
     }
-    std::printf("cells=%zu\ncell_mm=%.2f\nblank_cells=%zu\nedge_cells=%zu\nde00_mean=%.3f\nde00_p95=%.3f\nde00_max=%.3f\n"
-                "fabric_white_lab=%.2f,%.2f,%.2f\nout_of_gamut_share=%.4f\nout_of_gamut_worst_de00=%.2f\n",
-                r->cells, r->cell_mm, r->blank_cells, r->edge_cells, r->mean_de00, r->p95_de00, r->max_de00, r->fabric_white.l,
-                r->fabric_white.a, r->fabric_white.b, r->out_of_gamut_share, r->out_of_gamut_worst_de00);
+    std::printf(
+        "cells=%zu\ncell_mm=%.2f\nblank_cells=%zu\nedge_cells=%zu\nde00_mean=%.3f\nde00_p95=%.3f\nde00_max=%.3f\n"
+        "fabric_white_lab=%.2f,%.2f,%.2f\nout_of_gamut_share=%.4f\nout_of_gamut_worst_de00=%.2f\nbias_lab=%.2f,%.2f,%."
+        "2f\n",
+        r->cells, r->cell_mm, r->blank_cells, r->edge_cells, r->mean_de00, r->p95_de00, r->max_de00, r->fabric_white.l,
+        r->fabric_white.a, r->fabric_white.b, r->out_of_gamut_share, r->out_of_gamut_worst_de00, r->bias.l, r->bias.a,
+        r->bias.b);
   });
 }
 
