@@ -154,6 +154,79 @@ void read_fit(const fs::path& log, CalibrateSummary& s) {
   }
 }
 
+// One chart: targen's device values (spread by `guide` when given), printed as a job, found on the
+// fabric and read by the simulated spectrophotometer into `base`.ti3; adds the chart's area.
+Status print_and_measure(const CalibrateOptions& o, const fs::path& base, const fs::path& job, const fs::path& printed,
+                         const std::optional<fs::path>& guide, const fs::path& log, double& area_m2) {
+  std::error_code ec;
+  // 1. The chart's device values (targen: RGB printer, optimised full spread).
+  std::vector<std::string> targen{"targen", "-v", "-d2", "-f", std::to_string(o.patches)};
+  if (guide) {
+    if (!fs::is_regular_file(*guide, ec))
+      return fail(ErrorCode::kInvalidArgument, guide->string() + ": no such preconditioning profile");
+    targen.insert(targen.end(), {"-c", guide->string()});
+  }
+  targen.push_back(base.string());
+  if (auto st = run_tool("targen", targen, log); !st) return st;
+  auto ti1 = device::load_cgats(base.string() + ".ti1");
+  if (!ti1) return fail(ErrorCode::kPipeline, "targen output: " + ti1.error().message);
+  auto chart = layout_chart(ti1->front(), base.string() + ".ti1");
+  if (!chart) return fail(chart.error());
+  // 2. Printed as a job, on the printer the job names (here: printsim through printctl run).
+  if (auto st = write_chart_job(job, *chart, o); !st) return st;
+  if (auto st = run_tool("chart job",
+                         {(own_dir() / "printctl").string(), "run", job.string(), "--out", printed.string()}, log);
+      !st)
+    return st;
+  area_m2 += chart->width_mm * chart->height_mm * 1e-6;
+  // 3. Where it landed, then the simulated spectrophotometer reads every patch.
+  auto lab = rip::read_image3f(printed / "fabric-lab.tif");
+  if (!lab) return fail(ErrorCode::kPipeline, lab.error().message);
+  auto where = locate_chart(*lab, *chart, printed / "fabric-lab.tif");
+  if (!where) return fail(where.error());
+  device::CgatsTable ti2;
+  ti2.type = "CTI2";
+  ti2.keywords = {{"DESCRIPTOR", "tp calibration chart as printed (patch centres on the fabric)"},
+                  {"ORIGINATOR", "tp printctl calibrate"},
+                  {"COLOR_REP", "RGB"}};
+  ti2.fields = {"SAMPLE_ID", "RGB_R", "RGB_G", "RGB_B", "TP_X_MM", "TP_Y_MM"};
+  for (const auto& p : chart->patches)
+    ti2.rows.push_back({p.id, fmt(p.rgb_pct[0], 4), fmt(p.rgb_pct[1], 4), fmt(p.rgb_pct[2], 4),
+                        fmt(where->x0_mm + where->sx * p.x_mm), fmt(where->y0_mm + where->sy * p.y_mm)});
+  const fs::path ti2_path = base.string() + ".ti2";
+  std::ofstream(ti2_path) << device::format_cgats(ti2);
+  if (auto st = run_tool("measure",
+                         {(own_dir() / "printsim").string(), "measure", "--chart", ti2_path.string(), "--fabric",
+                          (printed / "fabric-lab.tif").string(), "--out", base.string() + ".ti3", "--aperture-mm",
+                          fmt(o.aperture_mm, 2), "--noise", fmt(o.noise_de, 3)},
+                         log);
+      !st)
+    return st;
+  return check_measurements(base.string() + ".ti3");
+}
+
+// The readings of several charts as one measurement file, patches numbered through.
+Status merge_measurements(const std::vector<fs::path>& parts, const fs::path& out) {
+  device::CgatsTable all;
+  for (const fs::path& part : parts) {
+    auto t = device::load_cgats(part);
+    if (!t) return fail(ErrorCode::kPipeline, t.error().message);
+    const device::CgatsTable& table = t->front();
+    if (all.fields.empty()) {
+      all = table;
+      all.rows.clear();
+    } else if (table.fields != all.fields) {
+      return fail(ErrorCode::kPipeline, part.string() + ": its fields differ from " + parts.front().string() + "'s");
+    }
+    for (auto row : table.rows) {
+      row[static_cast<std::size_t>(all.field("SAMPLE_ID"))] = std::to_string(all.rows.size() + 1);
+      all.rows.push_back(std::move(row));
+    }
+  }
+  std::ofstream(out) << device::format_cgats(all);
+  return {};
+}
+
 }  // namespace
 
 Status check_measurements(const fs::path& ti3) {
@@ -190,6 +263,7 @@ Result<CalibrateSummary> calibrate(const CalibrateOptions& o) {
   const auto start = std::chrono::steady_clock::now();
   if (o.patches < 800 && !o.measurements)
     return fail(ErrorCode::kInvalidArgument, "calibrate: a profiling chart needs at least 800 patches");
+  if (o.passes < 1 || o.passes > 3) return fail(ErrorCode::kInvalidArgument, "calibrate: passes must be 1..3");
   std::error_code ec;
   fs::create_directories(o.out, ec);
   if (ec) return fail(ErrorCode::kIo, o.out.string() + ": cannot create: " + ec.message());
@@ -202,43 +276,30 @@ Result<CalibrateSummary> calibrate(const CalibrateOptions& o) {
     fs::copy_file(*o.measurements, base.string() + ".ti3", fs::copy_options::overwrite_existing, ec);
     if (ec) return fail(ErrorCode::kIo, base.string() + ".ti3: " + ec.message());
   } else {
-    // 1. The chart's device values (targen: RGB printer, optimised full spread).
-    if (auto st = run_tool("targen", {"targen", "-v", "-d2", "-f", std::to_string(o.patches), base.string()}, log); !st)
-      return fail(st.error());
-    auto ti1 = device::load_cgats(base.string() + ".ti1");
-    if (!ti1) return fail(ErrorCode::kPipeline, "targen output: " + ti1.error().message);
-    auto chart = layout_chart(ti1->front(), base.string() + ".ti1");
-    if (!chart) return fail(chart.error());
-    // 2. Printed as a job, on the printer the job names (here: printsim through printctl run).
-    const fs::path job = o.out / "chart-job", printed = o.out / "chart-printed";
-    if (auto st = write_chart_job(job, *chart, o); !st) return fail(st.error());
-    if (auto st = run_tool("chart job", {(own_dir() / "printctl").string(), "run", job.string(), "--out", printed.string()}, log);
-        !st)
-      return fail(st.error());
-    s.chart_area_m2 = chart->width_mm * chart->height_mm * 1e-6;
-    // 3. Where it landed, then the simulated spectrophotometer reads every patch.
-    auto lab = rip::read_image3f(printed / "fabric-lab.tif");
-    if (!lab) return fail(ErrorCode::kPipeline, lab.error().message);
-    auto where = locate_chart(*lab, *chart, printed / "fabric-lab.tif");
-    if (!where) return fail(where.error());
-    device::CgatsTable ti2;
-    ti2.type = "CTI2";
-    ti2.keywords = {{"DESCRIPTOR", "tp calibration chart as printed (patch centres on the fabric)"},
-                    {"ORIGINATOR", "tp printctl calibrate"},
-                    {"COLOR_REP", "RGB"}};
-    ti2.fields = {"SAMPLE_ID", "RGB_R", "RGB_G", "RGB_B", "TP_X_MM", "TP_Y_MM"};
-    for (const auto& p : chart->patches)
-      ti2.rows.push_back({p.id, fmt(p.rgb_pct[0], 4), fmt(p.rgb_pct[1], 4), fmt(p.rgb_pct[2], 4),
-                          fmt(where->x0_mm + where->sx * p.x_mm), fmt(where->y0_mm + where->sy * p.y_mm)});
-    const fs::path ti2_path = base.string() + ".ti2";
-    std::ofstream(ti2_path) << device::format_cgats(ti2);
-    if (auto st = run_tool("measure", {(own_dir() / "printsim").string(), "measure", "--chart", ti2_path.string(), "--fabric",
-                                       (printed / "fabric-lab.tif").string(), "--out", base.string() + ".ti3",
-                                       "--aperture-mm", fmt(o.aperture_mm, 2), "--noise", fmt(o.noise_de, 3)},
-                           log);
-        !st)
-      return fail(st.error());
-    if (auto st = check_measurements(base.string() + ".ti3"); !st) return fail(st.error());
+    // Each pass prints and reads a chart; a later pass spreads its patches by the profile the
+    // passes before it made (targen -c), and the profile is built from every pass's readings.
+    std::vector<fs::path> readings;
+    for (int pass = 1; pass <= o.passes; ++pass) {
+      const bool last = pass == o.passes;
+      const std::string tag = last ? std::string() : "-" + std::to_string(pass);
+      const fs::path pass_base = o.out / ("pass" + std::to_string(pass));
+      std::optional<fs::path> guide = o.precondition;
+      if (pass > 1) {
+        const fs::path previous = o.out / ("pass" + std::to_string(pass - 1));
+        if (auto st = merge_measurements(readings, previous.string() + "-all.ti3"); !st) return fail(st.error());
+        if (auto st = run_tool("colprof (pass " + std::to_string(pass - 1) + ")",
+                               {"colprof", "-v", "-ql", "-D", "tp calibration pass", previous.string() + "-all"}, log);
+            !st)
+          return fail(st.error());
+        guide = previous.string() + "-all.icc";
+      }
+      if (auto st = print_and_measure(o, pass_base, o.out / ("chart-job" + tag), o.out / ("chart-printed" + tag), guide,
+                                      log, s.chart_area_m2);
+          !st)
+        return fail(st.error());
+      readings.push_back(pass_base.string() + ".ti3");
+    }
+    if (auto st = merge_measurements(readings, base.string() + ".ti3"); !st) return fail(st.error());
   }
   // 4. The profile, and how well it fits its own measurements.
   if (auto st = run_tool("colprof", {"colprof", "-v", "-q" + o.quality, "-D", "tp " + o.fabric + " calibration", base.string()}, log);
@@ -261,6 +322,7 @@ Result<CalibrateSummary> calibrate(const CalibrateOptions& o) {
             {"profile_kind", "rgb-through-separation"},
             {"measurements", "profile.ti3"},
             {"source", o.measurements ? "measurements file" : "printsim measure"},
+            {"precondition", o.precondition ? o.precondition->string() : std::string()},
             {"patches", s.patches},
             {"chart_area_m2", s.chart_area_m2},
             {"fit_de00", {{"mean", s.fit_mean_de00}, {"max", s.fit_max_de00}}},

@@ -21,6 +21,12 @@ struct CalibrateOptions {
   double aperture_mm = 4;                              ///< simulated instrument
   double noise_de = 0.2;
   std::string quality = "m";                           ///< colprof -q: l, m, h
+  /// A previous profile of this printer and fabric (targen -c): the first chart's patches are
+  /// spread evenly in CIELAB rather than in device RGB, so the light colours get their share.
+  std::optional<std::filesystem::path> precondition;
+  /// Charts printed: each after the first is spread by the profile of the ones before it; the
+  /// profile is built from all of them.
+  int passes = 2;
 };
 
 struct CalibrateSummary {

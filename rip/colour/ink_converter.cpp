@@ -16,6 +16,7 @@
 #include "geometry/common/thread_pool.h"
 #include "rip/colour/internal/lcms_handles.h"
 #include "rip/colour/multi_ink_profile.h"
+#include "rip/colour/profile_inverse.h"
 #include "rip/common/internal/log.h"
 #include "rip/common/memory.h"
 
@@ -80,6 +81,7 @@ struct InkConverter::Table {
   // Kept for convert_exact: the same separation at full precision.
   lcms::Profile profile;
   lcms::Transform exact;  ///< sRGB double -> inks double (0..1), unoptimised
+  std::unique_ptr<RgbProfileInverse> calibration;  ///< sRGB ahead of `exact` (a calibration set)
   std::vector<ToneCurve> curves;
   std::vector<bool> black;
   double limit_fraction = 0;  ///< sum of ink fractions allowed at nodes (includes rounding margin)
@@ -236,29 +238,15 @@ Result<InkConverter> InkConverter::create(const InkConverterSettings& s) {
   const cmsUInt32Number ink_dbl = FLOAT_SH(1) | CHANNELS_SH(t->channels) | BYTES_SH(0);
   // Unoptimised transforms evaluate the profile's own tables, not an lcms2 precalculated grid.
   const cmsUInt32Number flags = cmsFLAGS_BLACKPOINTCOMPENSATION | cmsFLAGS_NOOPTIMIZE | cmsFLAGS_NOCACHE;
-  lcms::Transform to_ink16, exact;
-  if (s.calibration_profile.empty()) {
-    to_ink16.reset(cmsCreateTransform(srgb.get(), TYPE_RGB_16, t->profile.get(), ink16, intent, flags));
-    exact.reset(cmsCreateTransform(srgb.get(), TYPE_RGB_DBL, t->profile.get(), ink_dbl, intent, flags));
-  } else {
-    // sRGB -> calibration profile (as output: the printer's RGB that gives the colour) -> the
-    // separation the chart was printed with (those RGB values entered as sRGB) -> inks.
-    const std::string cname = s.calibration_profile.string();
-    lcms::Profile cal(cmsOpenProfileFromFile(cname.c_str(), "r"));
-    if (!cal) return fail(ErrorCode::kColour, cname + ": not a readable ICC profile");
-    if (cmsGetDeviceClass(cal.get()) != cmsSigOutputClass || cmsGetColorSpace(cal.get()) != cmsSigRgbData)
-      return fail(ErrorCode::kColour, cname + ": a calibration profile must be an RGB output profile");
-    lcms::Profile srgb_again(cmsCreate_sRGBProfile());
-    cmsHPROFILE chain[4] = {srgb.get(), cal.get(), srgb_again.get(), t->profile.get()};
-    cmsUInt32Number intents[4] = {INTENT_RELATIVE_COLORIMETRIC, INTENT_RELATIVE_COLORIMETRIC, intent, intent};
-    cmsBool bpc[4] = {0, 0, 1, 1};
-    cmsFloat64Number adapt[4] = {1, 1, 1, 1};
-    const cmsUInt32Number chain_flags = cmsFLAGS_NOOPTIMIZE | cmsFLAGS_NOCACHE;
-    to_ink16.reset(cmsCreateExtendedTransform(nullptr, 4, chain, bpc, intents, adapt, nullptr, 0, TYPE_RGB_16, ink16,
-                                              chain_flags));
-    exact.reset(cmsCreateExtendedTransform(nullptr, 4, chain, bpc, intents, adapt, nullptr, 0, TYPE_RGB_DBL, ink_dbl,
-                                           chain_flags));
-    pname += " after calibration " + cname;
+  lcms::Transform to_ink16(cmsCreateTransform(srgb.get(), TYPE_RGB_16, t->profile.get(), ink16, intent, flags));
+  lcms::Transform exact(cmsCreateTransform(srgb.get(), TYPE_RGB_DBL, t->profile.get(), ink_dbl, intent, flags));
+  if (!s.calibration_profile.empty()) {
+    // sRGB -> the calibration profile's device RGB (its forward model inverted exactly,
+    // rip/colour/profile_inverse.h) -> the separation the chart was printed with -> inks.
+    auto inverse = RgbProfileInverse::open(s.calibration_profile);
+    if (!inverse) return fail(ErrorCode::kColour, "calibration: " + inverse.error().message);
+    t->calibration = std::make_unique<RgbProfileInverse>(std::move(*inverse));
+    pname += " after calibration " + s.calibration_profile.string();
   }
   t->exact = std::move(exact);
   if (!to_ink16 || !t->exact)
@@ -282,12 +270,22 @@ Result<InkConverter> InkConverter::create(const InkConverterSettings& s) {
         rgb[3 * i + 1] = static_cast<std::uint16_t>(std::lround(gg * 65535.0 / (g - 1)));
         rgb[3 * i + 2] = static_cast<std::uint16_t>(std::lround(b * 65535.0 / (g - 1)));
       }
-  cmsDoTransform(to_ink16.get(), rgb.data(), ink.data(), static_cast<cmsUInt32Number>(n_nodes));
+  std::vector<double> calibrated;
+  if (t->calibration) {
+    std::vector<std::array<double, 3>> srgb_nodes(n_nodes);
+    for (size_t i = 0; i < n_nodes; ++i)
+      for (int c = 0; c < 3; ++c) srgb_nodes[i][c] = rgb[3 * i + c] / 65535.0;
+    const auto device_rgb = t->calibration->device_for_srgb(srgb_nodes);
+    calibrated.resize(n_nodes * nc);
+    cmsDoTransform(t->exact.get(), device_rgb.data(), calibrated.data(), static_cast<cmsUInt32Number>(n_nodes));
+  } else {
+    cmsDoTransform(to_ink16.get(), rgb.data(), ink.data(), static_cast<cmsUInt32Number>(n_nodes));
+  }
   t->lanes = (nc + kLane - 1) / kLane * kLane;
   t->nodes.assign(n_nodes * t->lanes, 0);
   std::vector<double> v(nc);
   for (size_t i = 0; i < n_nodes; ++i) {
-    for (int c = 0; c < nc; ++c) v[c] = ink[i * nc + c] / 65535.0;
+    for (int c = 0; c < nc; ++c) v[c] = t->calibration ? calibrated[i * nc + c] : ink[i * nc + c] / 65535.0;
     t->finish_inks(v.data());
     for (int c = 0; c < nc; ++c)
       t->nodes[i * t->lanes + c] = static_cast<std::int16_t>(std::lround(v[c] * 255.0 * kNodeScale));
@@ -451,9 +449,10 @@ bool InkConverter::convert_row(const geometry::Rgba8* in, int n, std::uint8_t* c
 
 std::vector<double> InkConverter::convert_exact(geometry::Rgba8 colour) const {
   const Table& t = *table_;
-  const double rgb[3] = {colour.r / 255.0, colour.g / 255.0, colour.b / 255.0};
+  std::array<double, 3> rgb{colour.r / 255.0, colour.g / 255.0, colour.b / 255.0};
+  if (t.calibration) rgb = t.calibration->device_for_srgb({rgb}).front();
   std::vector<double> ink(t.channels);
-  cmsDoTransform(t.exact.get(), rgb, ink.data(), 1);
+  cmsDoTransform(t.exact.get(), rgb.data(), ink.data(), 1);
   t.finish_inks(ink.data());
   return ink;
 }

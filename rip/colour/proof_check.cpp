@@ -5,6 +5,7 @@
 
 #include "rip/colour/internal/lcms_handles.h"
 #include "rip/colour/lab_image.h"
+#include "rip/colour/profile_inverse.h"
 
 #include <algorithm>
 #include <cmath>
@@ -65,16 +66,27 @@ Result<ProofCheckResult> check_proof(const std::filesystem::path& design, const 
                                      double cell_mm, const std::filesystem::path& printer_profile) {
   // Lab -> printer -> Lab, relative colorimetric: how close the printer gets to each colour.
   lcms::Transform to_dev, from_dev;
+  std::unique_ptr<RgbProfileInverse> inverse;
   cmsUInt32Number dev_fmt = 0;
   if (!printer_profile.empty()) {
     lcms::Profile prof(cmsOpenProfileFromFile(printer_profile.string().c_str(), "r"));
     if (!prof) return fail(ErrorCode::kColour, printer_profile.string() + ": not a readable ICC profile");
     lcms::Profile lab(cmsCreateLab4Profile(nullptr));
+    if (cmsGetColorSpace(prof.get()) == cmsSigRgbData) {
+      auto inv = RgbProfileInverse::open(printer_profile);
+      if (!inv) return fail(inv.error());
+      inverse = std::make_unique<RgbProfileInverse>(std::move(*inv));
+    }
     const int nch = static_cast<int>(cmsChannelsOf(cmsGetColorSpace(prof.get())));
     dev_fmt = FLOAT_SH(1) | CHANNELS_SH(nch) | BYTES_SH(0);
-    to_dev.reset(cmsCreateTransform(lab.get(), TYPE_Lab_DBL, prof.get(), dev_fmt, INTENT_RELATIVE_COLORIMETRIC, cmsFLAGS_NOCACHE));
-    from_dev.reset(cmsCreateTransform(prof.get(), dev_fmt, lab.get(), TYPE_Lab_DBL, INTENT_RELATIVE_COLORIMETRIC, cmsFLAGS_NOCACHE));
-    if (!to_dev || !from_dev) return fail(ErrorCode::kColour, printer_profile.string() + ": lcms2 cannot build the gamut round trip");
+    if (!inverse) {
+      to_dev.reset(cmsCreateTransform(lab.get(), TYPE_Lab_DBL, prof.get(), dev_fmt, INTENT_RELATIVE_COLORIMETRIC,
+                                      cmsFLAGS_NOCACHE));
+      from_dev.reset(cmsCreateTransform(prof.get(), dev_fmt, lab.get(), TYPE_Lab_DBL, INTENT_RELATIVE_COLORIMETRIC,
+                                        cmsFLAGS_NOCACHE));
+    }
+    if (!inverse && (!to_dev || !from_dev))
+      return fail(ErrorCode::kColour, printer_profile.string() + ": lcms2 cannot build the gamut round trip");
   }
   if (!(cell_mm >= 0.1 && cell_mm <= 50)) return fail(ErrorCode::kInvalidArgument, "proof check: cell must be 0.1..50 mm");
   auto d = read_image3f(design);
@@ -145,14 +157,25 @@ Result<ProofCheckResult> check_proof(const std::filesystem::path& design, const 
   std::vector<double> de;
   de.reserve(printed.size());
   double oog_worst = 0;
-  for (std::size_t i : printed) {
-    const Lab want = device::xyz_to_lab(dc.mean(i));
-    if (to_dev) {
-      double dev[16] = {};
-      cmsCIELab in{want.l, want.a, want.b}, back{};
-      cmsDoTransform(to_dev.get(), &in, dev, 1);
-      cmsDoTransform(from_dev.get(), dev, &back, 1);
-      const double gap = device::delta_e_2000(want, {back.L, back.a, back.b});
+  // An RGB profile (a calibration set's) is inverted as the RIP inverts it (profile_inverse.h).
+  std::vector<Lab> wants, reproduced;
+  for (std::size_t i : printed) wants.push_back(device::xyz_to_lab(dc.mean(i)));
+  if (inverse) reproduced = inverse->colour_of(inverse->device_for(wants));
+  for (std::size_t k = 0; k < printed.size(); ++k) {
+    const std::size_t i = printed[k];
+    const Lab want = wants[k];
+    if (to_dev || inverse) {
+      Lab back;
+      if (inverse) {
+        back = reproduced[k];
+      } else {
+        double dev[16] = {};
+        cmsCIELab in{want.l, want.a, want.b}, out{};
+        cmsDoTransform(to_dev.get(), &in, dev, 1);
+        cmsDoTransform(from_dev.get(), dev, &out, 1);
+        back = {out.L, out.a, out.b};
+      }
+      const double gap = device::delta_e_2000(want, back);
       if (gap > kGamutTolerance_de00) {
         ++out.out_of_gamut_cells;
         oog_worst = std::max(oog_worst, gap);
@@ -162,11 +185,17 @@ Result<ProofCheckResult> check_proof(const std::filesystem::path& design, const 
     const Xyz fm = fc.mean(i);
     // Media-relative the ICC way: Bradford from the fabric white to D50, scaled to Y = 1.
     const Xyz rel = device::adapt_bradford({fm.x / w.y, fm.y / w.y, fm.z / w.y}, {w.x / w.y, 1.0, w.z / w.y}, device::kD50White);
-    de.push_back(device::delta_e_2000(want, device::xyz_to_lab(rel)));
+    const Lab got = device::xyz_to_lab(rel);
+    de.push_back(device::delta_e_2000(want, got));
+    out.bias.l += got.l - want.l;
+    out.bias.a += got.a - want.a;
+    out.bias.b += got.b - want.b;
   }
   out.out_of_gamut_share = static_cast<double>(out.out_of_gamut_cells) / static_cast<double>(printed.size());
   out.out_of_gamut_worst_de00 = oog_worst;
   if (de.empty()) return fail(ErrorCode::kInvalidArgument, design.string() + ": every printed cell is out of the printer's gamut");
+  const auto compared = static_cast<double>(de.size());
+  out.bias = {out.bias.l / compared, out.bias.a / compared, out.bias.b / compared};
   std::sort(de.begin(), de.end());
   double sum = 0;
   for (double v : de) sum += v;

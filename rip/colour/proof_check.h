@@ -17,6 +17,7 @@ struct ProofCheckResult {
   std::size_t edge_cells = 0;       ///< printed cells left out because the design changes colour there
   double cell_mm = 0;
   double mean_de00 = 0, p95_de00 = 0, max_de00 = 0;
+  device::Lab bias;                 ///< mean of fabric minus design (L*, a*, b*) over the compared cells
   device::Lab fabric_white;         ///< absolute, as measured on the blank cells
   // With a printer profile: the design's cells the printer cannot reproduce (round trip through
   // the profile, relative colorimetric, off by more than kGamutTolerance_de00) are left out of the

@@ -4,9 +4,14 @@
 #include <lcms2.h>
 
 #include <algorithm>
+#include <array>
+#include <cmath>
+#include <unordered_map>
+#include <vector>
 
 #include "device/colour/colorimetry.h"
 #include "rip/colour/internal/lcms_handles.h"
+#include "rip/colour/profile_inverse.h"
 #include "rip/colour/proof_check.h"
 
 namespace tp::rip {
@@ -16,14 +21,42 @@ Result<SoftProofSummary> soft_proof(const geometry::ImageRgba8& design, const st
   const std::string pname = profile.string();
   lcms::Profile prof(cmsOpenProfileFromFile(pname.c_str(), "r"));
   if (!prof) return fail(ErrorCode::kColour, pname + ": not a readable ICC profile");
-  lcms::Profile srgb_in(cmsCreate_sRGBProfile()), srgb_out(cmsCreate_sRGBProfile());
-  // Printer profile as output then as input: the colour it gives for each design colour.
-  cmsHPROFILE chain[4] = {srgb_in.get(), prof.get(), prof.get(), srgb_out.get()};
-  lcms::Transform t(cmsCreateMultiprofileTransform(chain, 4, TYPE_RGBA_8, TYPE_RGBA_8, INTENT_RELATIVE_COLORIMETRIC,
-                                                   cmsFLAGS_COPY_ALPHA | cmsFLAGS_HIGHRESPRECALC));
-  if (!t) return fail(ErrorCode::kColour, pname + ": lcms2 cannot build the soft-proof transform");
   proof = design;
-  cmsDoTransform(t.get(), design.pixels.data(), proof.pixels.data(), static_cast<cmsUInt32Number>(design.pixels.size()));
+  if (cmsGetColorSpace(prof.get()) == cmsSigRgbData) {
+    // An RGB profile (a calibration set's): the exact inverse of its forward model, the one the
+    // RIP separates with, so the proof shows what prints, not the B2A table's approximation.
+    auto inverse = RgbProfileInverse::open(profile);
+    if (!inverse) return fail(inverse.error());
+    std::unordered_map<std::uint32_t, std::size_t> index;
+    std::vector<std::array<double, 3>> colours;
+    for (const geometry::Rgba8& d : design.pixels) {
+      const std::uint32_t key = (static_cast<std::uint32_t>(d.r) << 16) | (d.g << 8) | d.b;
+      if (index.emplace(key, colours.size()).second) colours.push_back({d.r / 255.0, d.g / 255.0, d.b / 255.0});
+    }
+    const std::vector<device::Lab> lab = inverse->colour_of(inverse->device_for_srgb(colours));
+    lcms::Profile lab_profile(cmsCreateLab4Profile(nullptr)), srgb(cmsCreate_sRGBProfile());
+    lcms::Transform to_srgb(cmsCreateTransform(lab_profile.get(), TYPE_Lab_DBL, srgb.get(), TYPE_RGB_DBL,
+                                               INTENT_RELATIVE_COLORIMETRIC, cmsFLAGS_NOCACHE));
+    if (!to_srgb) return fail(ErrorCode::kColour, pname + ": lcms2 cannot build the soft-proof transform");
+    std::vector<cmsCIELab> in(lab.size());
+    for (std::size_t i = 0; i < lab.size(); ++i) in[i] = {lab[i].l, lab[i].a, lab[i].b};
+    std::vector<std::array<double, 3>> out(lab.size());
+    if (!in.empty()) cmsDoTransform(to_srgb.get(), in.data(), out.data(), static_cast<cmsUInt32Number>(in.size()));
+    auto q = [](double v) { return static_cast<std::uint8_t>(std::lround(std::clamp(v, 0.0, 1.0) * 255.0)); };
+    for (geometry::Rgba8& p : proof.pixels) {
+      const std::array<double, 3>& c = out[index.at((static_cast<std::uint32_t>(p.r) << 16) | (p.g << 8) | p.b)];
+      p = {q(c[0]), q(c[1]), q(c[2]), p.a};
+    }
+  } else {
+    lcms::Profile srgb_in(cmsCreate_sRGBProfile()), srgb_out(cmsCreate_sRGBProfile());
+    // Printer profile as output then as input: the colour it gives for each design colour.
+    cmsHPROFILE chain[4] = {srgb_in.get(), prof.get(), prof.get(), srgb_out.get()};
+    lcms::Transform t(cmsCreateMultiprofileTransform(chain, 4, TYPE_RGBA_8, TYPE_RGBA_8, INTENT_RELATIVE_COLORIMETRIC,
+                                                     cmsFLAGS_COPY_ALPHA | cmsFLAGS_HIGHRESPRECALC));
+    if (!t) return fail(ErrorCode::kColour, pname + ": lcms2 cannot build the soft-proof transform");
+    cmsDoTransform(t.get(), design.pixels.data(), proof.pixels.data(),
+                   static_cast<cmsUInt32Number>(design.pixels.size()));
+  }
   if (overlay) *overlay = proof;
   SoftProofSummary s;
   std::size_t oog = 0;

@@ -1,4 +1,4 @@
-// simulator/fabric/fabric_preview.cpp: level histograms per preview pixel and the two colour files.
+// simulator/fabric/fabric_preview.cpp: mean pixel colour per preview pixel and the two colour files.
 #include "simulator/fabric/fabric_preview.h"
 
 #include <OpenImageIO/imageio.h>
@@ -50,7 +50,8 @@ Result<std::unique_ptr<FabricPreview>> FabricPreview::open(const FabricColourMod
                                      "preview scale " + std::to_string(scale));
     if (auto s = make(lab, ls, p->files_->lab); !s) return fail(s.error());
   }
-  p->counts_.assign(static_cast<std::size_t>(p->out_width_) * model.inks() * FabricColourModel::kLevelBins, 0);
+  p->sums_.assign(p->out_width_, Xyz{});
+  p->inked_.assign(p->out_width_, 0);
   p->srgb_row_.resize(static_cast<std::size_t>(p->out_width_) * 3);
   p->lab_row_.resize(static_cast<std::size_t>(p->out_width_) * 3);
   return p;
@@ -58,22 +59,36 @@ Result<std::unique_ptr<FabricPreview>> FabricPreview::open(const FabricColourMod
 
 Status FabricPreview::add_row(std::span<const std::uint8_t> levels) {
   const std::size_t nch = model_.inks();
-  const std::size_t cell = nch * FabricColourModel::kLevelBins;
   const auto scale = static_cast<std::uint32_t>(spec_.scale);
-  // Only inked pixels touch the histogram; blank ones are counted at flush from the box size.
+  // Only inked pixels are summed; blank ones are counted at flush from the box size.
   for (std::uint32_t x = 0; x < spec_.width_px; ++x) {
-    const std::uint8_t* p = &levels[static_cast<std::size_t>(x) * nch];
-    std::uint32_t* c = &counts_[static_cast<std::size_t>(x / scale) * cell];
-    for (std::size_t k = 0; k < nch; ++k)
-      if (p[k]) ++c[k * FabricColourModel::kLevelBins + static_cast<std::size_t>(FabricColourModel::bin(p[k]))];
+    const std::span<const std::uint8_t> p = levels.subspan(static_cast<std::size_t>(x) * nch, nch);
+    std::uint64_t key = 0;
+    bool any = false;
+    for (std::size_t k = 0; k < nch; ++k) {
+      any = any || p[k];
+      if (k < 8) key |= static_cast<std::uint64_t>(p[k]) << (8 * k);
+    }
+    if (!any) continue;
+    Xyz c;
+    if (nch <= 8) {
+      auto it = cache_.find(key);
+      if (it == cache_.end()) it = cache_.emplace(key, model_.pixel_colour(p)).first;
+      c = it->second;
+    } else {
+      c = model_.pixel_colour(p);
+    }
+    Xyz& sum = sums_[x / scale];
+    sum.x += c.x;
+    sum.y += c.y;
+    sum.z += c.z;
+    ++inked_[x / scale];
   }
   if (++rows_in_ % scale == 0 || rows_in_ == spec_.height_px) return flush();
   return {};
 }
 
 Status FabricPreview::flush() {
-  const std::size_t nch = model_.inks();
-  const std::size_t cell = nch * FabricColourModel::kLevelBins;
   const auto scale = static_cast<std::uint32_t>(spec_.scale);
   const auto rows = static_cast<std::uint32_t>(rows_in_ % scale == 0 ? scale : rows_in_ % scale);
   // The PNG is media-relative (the bare fabric shows as sRGB white, as a relative-colorimetric
@@ -87,19 +102,12 @@ Status FabricPreview::flush() {
   for (std::uint32_t px = 0; px < out_width_; ++px) {
     const std::uint32_t cols = std::min(scale, spec_.width_px - px * scale);
     const std::uint32_t n = cols * rows;
-    std::uint32_t* c = &counts_[static_cast<std::size_t>(px) * cell];
-    bool inked = false;
-    for (std::size_t k = 0; k < nch; ++k) {
-      std::uint32_t* ck = c + k * FabricColourModel::kLevelBins;
-      std::uint32_t sum = 0;
-      for (int v = 1; v < FabricColourModel::kLevelBins; ++v) sum += ck[v];
-      ck[0] = n - sum;
-      inked = inked || sum;
-    }
     Lab lab = white_lab;
     std::array<std::uint8_t, 3> rgb = white_rgb;
-    if (inked) {
-      const Xyz xyz = model_.area_colour({c, cell}, n);
+    if (inked_[px]) {
+      const double blank = static_cast<double>(n - inked_[px]);
+      const Xyz& s = sums_[px];
+      const Xyz xyz{(s.x + blank * w.x) / n, (s.y + blank * w.y) / n, (s.z + blank * w.z) / n};
       lab = xyz_to_lab(xyz);
       rgb = xyz_to_srgb8(relative(xyz));
     }
@@ -109,7 +117,8 @@ Status FabricPreview::flush() {
     l[1] = static_cast<float>(lab.a);
     l[2] = static_cast<float>(lab.b);
   }
-  std::fill(counts_.begin(), counts_.end(), 0);
+  std::fill(sums_.begin(), sums_.end(), Xyz{});
+  std::fill(inked_.begin(), inked_.end(), 0);
   const int y = static_cast<int>(out_row_++);
   if (!files_->png->write_scanline(y, 0, OIIO::TypeDesc::UINT8, srgb_row_.data()))
     return fail(ErrorCode::kOutput, files_->png_path.string() + ": " + files_->png->geterror());

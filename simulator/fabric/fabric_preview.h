@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <memory>
 #include <span>
+#include <unordered_map>
 #include <vector>
 
 #include "simulator/common/error.h"
@@ -46,7 +47,14 @@ class FabricPreview {
   PreviewSpec spec_;
   std::uint32_t out_width_ = 0;
   std::unique_ptr<Files> files_;
-  std::vector<std::uint32_t> counts_;  ///< per preview column: inks x kLevelBins histogram
+  /// Per preview column: the summed XYZ of its inked fabric pixels, and how many they are. Each
+  /// fabric pixel's colour comes from its own drops and the area's is the mean of those, so a
+  /// colour does not depend on the preview scale (a chart read at scale 1 and a job previewed at
+  /// scale 3 print alike).
+  std::vector<Xyz> sums_;
+  std::vector<std::uint32_t> inked_;
+  /// Pixel colours by their packed drop levels (up to 8 inks): a print has few combinations.
+  std::unordered_map<std::uint64_t, Xyz> cache_;
   std::uint64_t rows_in_ = 0, out_row_ = 0;
   std::vector<std::uint8_t> srgb_row_;
   std::vector<float> lab_row_;

@@ -30,6 +30,7 @@ struct ProofCheckArgs {
 void register_colour_commands(CLI::App& app) {
   auto c = std::make_shared<CalibrateOptions>();
   auto printer = std::make_shared<std::string>(), measurements = std::make_shared<std::string>();
+  auto precondition = std::make_shared<std::string>();
   CLI::App* cal = app.add_subcommand("calibrate", "Print and measure a profiling chart, build the ICC profile (ArgyllCMS)");
   cal->add_option("--printer", *printer, "Printer model file (.tpm); the built-in model otherwise");
   cal->add_option("--fabric", c->fabric, "Fabric preset loaded in the printer")
@@ -42,8 +43,14 @@ void register_colour_commands(CLI::App& app) {
   cal->add_option("--aperture-mm", c->aperture_mm, "Simulated instrument aperture")->capture_default_str();
   cal->add_option("--noise", c->noise_de, "Simulated instrument noise per L*, a*, b*")->capture_default_str();
   cal->add_option("--quality", c->quality, "colprof quality: l, m, h")->check(CLI::IsMember({"l", "m", "h"}))->capture_default_str();
-  cal->callback([c, printer, measurements] {
+  cal->add_option("--passes", c->passes, "Charts printed; each after the first spread by the profile so far")
+      ->check(CLI::Range(1, 3))
+      ->capture_default_str();
+  cal->add_option("--precondition", *precondition,
+                  "A first profile of this printer and fabric: spread the patches evenly in colour (targen -c)");
+  cal->callback([c, printer, measurements, precondition] {
     if (!printer->empty()) c->printer_model = *printer;
+    if (!precondition->empty()) c->precondition = *precondition;
     if (!measurements->empty()) c->measurements = *measurements;
     auto r = calibrate(*c);
     if (!r) {
@@ -96,10 +103,13 @@ void register_colour_commands(CLI::App& app) {
       std::fprintf(stderr, "printctl proof-check: %s\n", r.error().what().c_str());
       throw CLI::RuntimeError(1);
     }
-    std::printf("cells=%zu\ncell_mm=%.2f\nblank_cells=%zu\nedge_cells=%zu\nde00_mean=%.3f\nde00_p95=%.3f\nde00_max=%.3f\n"
-                "fabric_white_lab=%.2f,%.2f,%.2f\nout_of_gamut_share=%.4f\nout_of_gamut_worst_de00=%.2f\n",
-                r->cells, r->cell_mm, r->blank_cells, r->edge_cells, r->mean_de00, r->p95_de00, r->max_de00, r->fabric_white.l,
-                r->fabric_white.a, r->fabric_white.b, r->out_of_gamut_share, r->out_of_gamut_worst_de00);
+    std::printf(
+        "cells=%zu\ncell_mm=%.2f\nblank_cells=%zu\nedge_cells=%zu\nde00_mean=%.3f\nde00_p95=%.3f\nde00_max=%.3f\n"
+        "fabric_white_lab=%.2f,%.2f,%.2f\nout_of_gamut_share=%.4f\nout_of_gamut_worst_de00=%.2f\nbias_lab=%.2f,%.2f,%."
+        "2f\n",
+        r->cells, r->cell_mm, r->blank_cells, r->edge_cells, r->mean_de00, r->p95_de00, r->max_de00, r->fabric_white.l,
+        r->fabric_white.a, r->fabric_white.b, r->out_of_gamut_share, r->out_of_gamut_worst_de00, r->bias.l, r->bias.a,
+        r->bias.b);
   });
 }
 
