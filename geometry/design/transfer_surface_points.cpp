@@ -23,32 +23,60 @@ std::array<double, 3> barycentric_3d(Vec3 p, Vec3 a, Vec3 b, Vec3 c) {
 
 }  // namespace
 
-Result<std::vector<Vec3>> transfer_surface_points(const Pattern& pattern, const Garment& from, const Garment& to,
-                                                  const std::vector<Vec3>& points_mm) {
-  auto source = GarmentSurface::build(pattern, from);
-  if (!source) return std::unexpected(source.error().with_context("garment the points are on"));
-  auto target = GarmentSurface::build(pattern, to);
-  if (!target) return std::unexpected(target.error().with_context("garment the points go to"));
-  const GarmentSurface& S = **source;
-  const GarmentSurface& T = **target;
+Result<std::vector<PiecePoint>> locate_on_pieces(const Pattern& pattern, const Garment& garment,
+                                                 const std::vector<Vec3>& points_mm) {
+  auto surface = GarmentSurface::build(pattern, garment);
+  if (!surface) return std::unexpected(surface.error().with_context("garment the points are on"));
+  const GarmentSurface& S = **surface;
   const ClosestPointIndex index(S.garment().vertices_mm, S.triangles_3d());
-  std::vector<Vec3> out;
+  std::vector<PiecePoint> out;
   out.reserve(points_mm.size());
   for (const Vec3& p : points_mm) {
     const MeshHit hit = index.nearest(p);
     if (hit.triangle < 0) return fail(ErrorCode::kInvalidArgument, "garment the points are on: no triangles");
-    const auto [piece, tri] = S.triangle_owner()[static_cast<size_t>(hit.triangle)];
+    const auto [chart, tri] = S.triangle_owner()[static_cast<size_t>(hit.triangle)];
     // The hit in the piece triangle's own corner order, then its place on the piece.
     std::array<Vec3, 3> corner;
     for (int k = 0; k < 3; ++k) {
       ChartLocation at{tri, {0, 0, 0}};
       at.bary[static_cast<size_t>(k)] = 1;
-      corner[static_cast<size_t>(k)] = S.at(piece, at).position_mm;
+      corner[static_cast<size_t>(k)] = S.at(chart, at).position_mm;
     }
-    ChartLocation loc{tri, barycentric_3d(hit.point_mm, corner[0], corner[1], corner[2])};
-    const Vec2 on_piece = S.chart_position(piece, loc);
-    out.push_back(T.at(piece, T.chart(piece).locator.nearest(on_piece)).position_mm);
+    const ChartLocation loc{tri, barycentric_3d(hit.point_mm, corner[0], corner[1], corner[2])};
+    out.push_back({S.chart(chart).piece->piece, S.chart_position(chart, loc), p - hit.point_mm});
   }
+  return out;
+}
+
+Result<std::vector<GarmentPoint>> place_on_garment(const Pattern& pattern, const Garment& garment,
+                                                   const std::vector<PiecePoint>& points) {
+  auto surface = GarmentSurface::build(pattern, garment);
+  if (!surface) return std::unexpected(surface.error().with_context("garment the points go to"));
+  const GarmentSurface& T = **surface;
+  std::vector<GarmentPoint> out;
+  out.reserve(points.size());
+  for (const PiecePoint& pp : points) {
+    int chart = -1;
+    for (int c = 0; c < T.piece_count() && chart < 0; ++c)
+      if (T.chart(c).piece->piece == pp.piece) chart = c;
+    if (chart < 0)
+      return fail(ErrorCode::kInvalidArgument,
+                  "garment the points go to: piece " + std::to_string(pp.piece) + " is not on the garment");
+    const ChartLocation loc = T.chart(chart).locator.nearest(pp.position_mm);
+    out.push_back({T.at(chart, loc).position_mm, norm(T.chart_position(chart, loc) - pp.position_mm)});
+  }
+  return out;
+}
+
+Result<std::vector<Vec3>> transfer_surface_points(const Pattern& pattern, const Garment& from, const Garment& to,
+                                                  const std::vector<Vec3>& points_mm) {
+  auto located = locate_on_pieces(pattern, from, points_mm);
+  if (!located) return std::unexpected(located.error());
+  auto placed = place_on_garment(pattern, to, *located);
+  if (!placed) return std::unexpected(placed.error());
+  std::vector<Vec3> out;
+  out.reserve(placed->size());
+  for (const GarmentPoint& g : *placed) out.push_back(g.position_mm);
   return out;
 }
 
