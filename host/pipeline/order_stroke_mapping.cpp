@@ -2,9 +2,10 @@
 // through their pieces' pattern coordinates (closest point, mean value coordinates, chart lift).
 #include "host/pipeline/order_stroke_mapping.h"
 
-#include <array>
+#include <algorithm>
 #include <cmath>
-#include <limits>
+
+#include "geometry/design/transfer_surface_points.h"
 
 namespace tp::host {
 
@@ -17,38 +18,6 @@ using geometry::Vec3;
 constexpr int kSamplesPerEdge = 24;
 /// A graded position may lie this far outside the target mesh (its chords cut curved seams).
 constexpr double kOutsideMeshMm = 3.0;
-
-// Closest point of triangle abc to p (Ericson, Real-Time Collision Detection 5.1.5), as
-// barycentric weights of a, b, c.
-std::array<double, 3> closest_on_triangle(Vec3 p, Vec3 a, Vec3 b, Vec3 c) {
-  const Vec3 ab = b - a, ac = c - a, ap = p - a;
-  const double d1 = dot(ab, ap), d2 = dot(ac, ap);
-  if (d1 <= 0 && d2 <= 0) return {1, 0, 0};
-  const Vec3 bp = p - b;
-  const double d3 = dot(ab, bp), d4 = dot(ac, bp);
-  if (d3 >= 0 && d4 <= d3) return {0, 1, 0};
-  const double vc = d1 * d4 - d3 * d2;
-  if (vc <= 0 && d1 >= 0 && d3 <= 0) {
-    const double v = d1 / (d1 - d3);
-    return {1 - v, v, 0};
-  }
-  const Vec3 cp = p - c;
-  const double d5 = dot(ab, cp), d6 = dot(ac, cp);
-  if (d6 >= 0 && d5 <= d6) return {0, 0, 1};
-  const double vb = d5 * d2 - d1 * d6;
-  if (vb <= 0 && d2 >= 0 && d6 <= 0) {
-    const double w = d2 / (d2 - d6);
-    return {1 - w, 0, w};
-  }
-  const double va = d3 * d6 - d5 * d4;
-  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) {
-    const double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
-    return {0, 1 - w, w};
-  }
-  const double denom = 1 / (va + vb + vc);
-  const double v = vb * denom, w = vc * denom;
-  return {1 - v - w, v, w};
-}
 
 // The piece's seam-line outline, each edge resampled at the same fractions of its length.
 std::vector<Vec2> resampled_outline(const geometry::Piece& piece) {
@@ -107,53 +76,28 @@ std::vector<double> mean_value_coordinates(const std::vector<Vec2>& v, Vec2 q) {
   return w;
 }
 
-const geometry::GarmentPiece* chart_of(const geometry::Garment& g, int piece) {
-  for (const auto& gp : g.pieces)
-    if (gp.piece == piece) return &gp;
-  return nullptr;
-}
-
 }  // namespace
 
 std::optional<std::vector<MappedStrokePoint>> map_stroke_through_pieces(const std::vector<Vec3>& points_mm,
                                                                         const SizedGarment& base,
                                                                         const SizedGarment& target, std::string& why) {
-  std::vector<MappedStrokePoint> out;
-  for (const Vec3& p : points_mm) {
-    // 1. The closest point of the base garment: its piece and pattern position.
-    double best = std::numeric_limits<double>::infinity();
-    const geometry::GarmentPiece* best_gp = nullptr;
-    Vec2 q;
-    Vec3 offset;
-    for (const geometry::GarmentPiece& gp : base.garment->pieces) {
-      for (const auto& t : gp.mesh.triangles) {
-        const Vec3 a = base.garment->vertices_mm[static_cast<size_t>(gp.vertex_3d[static_cast<size_t>(t[0])])];
-        const Vec3 b = base.garment->vertices_mm[static_cast<size_t>(gp.vertex_3d[static_cast<size_t>(t[1])])];
-        const Vec3 c = base.garment->vertices_mm[static_cast<size_t>(gp.vertex_3d[static_cast<size_t>(t[2])])];
-        const auto w = closest_on_triangle(p, a, b, c);
-        const Vec3 x = a * w[0] + b * w[1] + c * w[2];
-        const double d = norm(p - x);
-        if (d < best) {
-          best = d;
-          best_gp = &gp;
-          offset = p - x;
-          q = gp.mesh.vertices_mm[static_cast<size_t>(t[0])] * w[0] +
-              gp.mesh.vertices_mm[static_cast<size_t>(t[1])] * w[1] +
-              gp.mesh.vertices_mm[static_cast<size_t>(t[2])] * w[2];
-        }
-      }
-    }
-    if (!best_gp) {
-      why = "the base garment has no triangles";
-      return std::nullopt;
-    }
-    // 2. The same place relative to the seam line of the target's piece of the same name.
-    const geometry::Piece& bp = base.pattern->pieces[static_cast<size_t>(best_gp->piece)];
+  // 1. The closest point of the base garment: its piece and pattern position.
+  auto located = geometry::locate_on_pieces(*base.pattern, *base.garment, points_mm);
+  if (!located) {
+    why = located.error().message;
+    return std::nullopt;
+  }
+  // 2. The same place relative to the seam line of the target's piece of the same name.
+  std::vector<geometry::PiecePoint> graded;
+  graded.reserve(located->size());
+  for (const geometry::PiecePoint& at : *located) {
+    const geometry::Piece& bp = base.pattern->pieces[static_cast<size_t>(at.piece)];
     int tpi = -1;
     for (size_t k = 0; k < target.pattern->pieces.size(); ++k)
       if (target.pattern->pieces[k].name == bp.name) tpi = static_cast<int>(k);
-    const geometry::GarmentPiece* tgp = tpi >= 0 ? chart_of(*target.garment, tpi) : nullptr;
-    if (!tgp) {
+    const bool on_garment = tpi >= 0 && std::any_of(target.garment->pieces.begin(), target.garment->pieces.end(),
+                                                    [&](const geometry::GarmentPiece& gp) { return gp.piece == tpi; });
+    if (!on_garment) {
       why = "piece '" + bp.name + "' has no namesake on the other size's garment";
       return std::nullopt;
     }
@@ -163,36 +107,29 @@ std::optional<std::vector<MappedStrokePoint>> map_stroke_through_pieces(const st
             std::to_string(tp.edges.size()) + " in the other";
       return std::nullopt;
     }
-    const auto lambda = mean_value_coordinates(resampled_outline(bp), q);
+    const auto lambda = mean_value_coordinates(resampled_outline(bp), at.position_mm);
     const auto target_outline = resampled_outline(tp);
     Vec2 qt;
     for (size_t i = 0; i < lambda.size(); ++i) qt = qt + target_outline[i] * lambda[i];
-    // 3. Lifted onto the target garment through its chart (the nearest triangle when a curved
-    // seam line passes outside the mesh's chords).
-    double best2 = std::numeric_limits<double>::infinity();
-    Vec3 lifted;
-    for (const auto& t : tgp->mesh.triangles) {
-      const Vec2 a = tgp->mesh.vertices_mm[static_cast<size_t>(t[0])],
-                 b = tgp->mesh.vertices_mm[static_cast<size_t>(t[1])],
-                 c = tgp->mesh.vertices_mm[static_cast<size_t>(t[2])];
-      const auto w = closest_on_triangle({qt.x, qt.y, 0}, {a.x, a.y, 0}, {b.x, b.y, 0}, {c.x, c.y, 0});
-      const Vec2 x = a * w[0] + b * w[1] + c * w[2];
-      const double d = norm(qt - x);
-      if (d < best2) {
-        best2 = d;
-        const auto v3 = [&](int i) {
-          return target.garment
-              ->vertices_mm[static_cast<size_t>(tgp->vertex_3d[static_cast<size_t>(t[static_cast<size_t>(i)])])];
-        };
-        lifted = v3(0) * w[0] + v3(1) * w[1] + v3(2) * w[2];
-      }
-    }
-    if (!(best2 <= kOutsideMeshMm)) {
-      why = "piece '" + bp.name + "': the graded stroke point lies " + std::to_string(best2) +
+    graded.push_back({tpi, qt, at.offset_mm});
+  }
+  // 3. Lifted onto the target garment through its chart (the nearest point of the piece when a
+  // curved seam line passes outside the mesh's chords).
+  auto placed = geometry::place_on_garment(*target.pattern, *target.garment, graded);
+  if (!placed) {
+    why = placed.error().message;
+    return std::nullopt;
+  }
+  std::vector<MappedStrokePoint> out;
+  out.reserve(graded.size());
+  for (size_t i = 0; i < graded.size(); ++i) {
+    const std::string& name = target.pattern->pieces[static_cast<size_t>(graded[i].piece)].name;
+    if (!((*placed)[i].outside_mm <= kOutsideMeshMm)) {
+      why = "piece '" + name + "': the graded stroke point lies " + std::to_string((*placed)[i].outside_mm) +
             " mm outside the other size's piece";
       return std::nullopt;
     }
-    out.push_back({bp.name, lifted + offset});
+    out.push_back({name, (*placed)[i].position_mm + graded[i].offset_mm});
   }
   return out;
 }
