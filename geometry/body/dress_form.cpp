@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numbers>
 #include <vector>
 
 #include "geometry/body/marching_tetrahedra.h"
@@ -11,7 +12,6 @@
 namespace tp::geometry {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 // Blend radii of the smooth unions: armpit and shoulder, neck base.
 constexpr double kArmBlendMm = 14;
 constexpr double kNeckBlendMm = 18;
@@ -100,7 +100,7 @@ double section_girth_mm(const TorsoSection& s) {
   double len = 0;
   Vec2 prev{};
   for (int i = 0; i <= kSamples; ++i) {
-    double th = 2 * kPi * i / kSamples, c = std::cos(th), sn = std::sin(th);
+    double th = 2 * std::numbers::pi * i / kSamples, c = std::cos(th), sn = std::sin(th);
     double b = sn >= 0 ? s.front_mm : s.back_mm;
     Vec2 p{s.half_width_mm * std::copysign(std::pow(std::abs(c), 2 / s.exponent), c),
            b * std::copysign(std::pow(std::abs(sn), 2 / s.exponent), sn)};
@@ -120,13 +120,13 @@ DressFormLandmarks dress_form_landmarks(const BodyMeasurements& m) {
   l.bust_y = l.waist_y + 0.44 * m.back_length_mm;
   l.underbust_y = l.bust_y - 0.2 * m.back_length_mm;
   l.armpit_y = l.nape_y - m.armscye_depth_mm;
-  l.neck_radius_mm = m.neck_mm / (2 * kPi);
+  l.neck_radius_mm = m.neck_mm / (2 * std::numbers::pi);
   l.neck_top_y = l.nape_y + 6;
-  const double slope = m.shoulder_slope_deg * kPi / 180;
+  const double slope = m.shoulder_slope_deg * std::numbers::pi / 180;
   l.shoulder_y = l.nape_y - (m.shoulder_width_mm / 2 - l.neck_radius_mm) * std::tan(slope);
-  l.upper_arm_radius_mm = m.upper_arm_mm / (2 * kPi);
-  l.wrist_radius_mm = m.wrist_mm / (2 * kPi);
-  const double angle = m.arm_angle_deg * kPi / 180;
+  l.upper_arm_radius_mm = m.upper_arm_mm / (2 * std::numbers::pi);
+  l.wrist_radius_mm = m.wrist_mm / (2 * std::numbers::pi);
+  const double angle = m.arm_angle_deg * std::numbers::pi / 180;
   l.arm_joint_left = {m.shoulder_width_mm / 2 - l.upper_arm_radius_mm - 4, l.shoulder_y - 0.7 * l.upper_arm_radius_mm, -8};
   l.arm_direction_left = {std::sin(angle), -std::cos(angle), 0};
   l.arm_length_mm = m.arm_length_mm;

@@ -4,6 +4,7 @@
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <numbers>
 #include <string>
 #include <utility>
 
@@ -65,7 +66,9 @@ Status validate(const BodyMeasurements& m) {
   if (!(s = less(m.waist_to_hip_mm, "waist_to_hip_mm", m.waist_to_knee_mm * 0.6, "0.6 x waist_to_knee_mm"))) return s;
   if (!(s = less(m.bust_span_mm, "bust_span_mm", m.bust_mm * 0.35, "0.35 x bust_mm"))) return s;
   if (!(s = less(m.wrist_mm, "wrist_mm", m.upper_arm_mm, "upper_arm_mm"))) return s;
-  if (!(s = less(m.neck_mm / M_PI, "neck width (neck_mm / pi)", m.shoulder_width_mm * 0.6, "0.6 x shoulder_width_mm"))) return s;
+  if (!(s = less(m.neck_mm / std::numbers::pi, "neck width (neck_mm / pi)", m.shoulder_width_mm * 0.6,
+                 "0.6 x shoulder_width_mm")))
+    return s;
   return {};
 }
 

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <numbers>
 #include <set>
 
 #include "geometry/common/aama_layers.h"
@@ -232,7 +233,7 @@ std::string dxf_aama_text(const CutJob& job) {
     // mirrors), exactly an INSERT's position, rotation and scale.
     const Affine2 m = to_cutter.compose(p.piece_to_roll);
     const double sx = m.determinant() < 0 ? -1.0 : 1.0;
-    const double rot_deg = std::atan2(m.d * sx, m.a * sx) * 180.0 / 3.14159265358979323846;
+    const double rot_deg = std::atan2(m.d * sx, m.a * sx) * 180.0 / std::numbers::pi;
     d.pair(0, "INSERT");
     d.pair(8, "0");
     d.pair(2, names[i]);

@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <functional>
 #include <map>
+#include <numbers>
 #include <string>
 
 namespace tp::geometry {
@@ -102,7 +103,7 @@ Result<PieceMesh> triangulate_polygon(const std::vector<Vec2>& ring, const Trian
   // Refine the inside (faces not reachable from infinity without crossing the outline) to the
   // size bound; boundary segments are never split, so seam vertices stay matched.
   // CGAL's shape bound is sin^2 of the smallest angle allowed.
-  const double sin_min = std::sin(options.min_angle_deg * M_PI / 180.0);
+  const double sin_min = std::sin(options.min_angle_deg * std::numbers::pi / 180.0);
   Mesher mesher(cdt, Criteria(sin_min * sin_min, options.target_edge_mm));
   mesher.refine_mesh();
   if (options.smoothing_iterations > 0)

@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <fstream>
+#include <numbers>
 
 #include <lcms2.h>
 #include <spdlog/fmt/fmt.h>
@@ -16,7 +17,6 @@ namespace tp::rip {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr int kMaxInks = 15;
 /// Inks of lower chroma than this (CIELAB C*) are achromatic: black (only one is supported).
 constexpr double kAchromaticChroma = 12;
@@ -303,8 +303,8 @@ Result<std::vector<std::uint8_t>> build_multi_ink_profile(const MultiInkProfileS
   for (size_t i = 0; i < hues.size(); ++i) {
     const size_t j = (i + 1) % hues.size();
     double gap = hues[j].first - hues[i].first;
-    if (j == 0) gap += 2 * kPi;
-    if (hues.size() > 1 && gap * 180 / kPi < kMinHueSeparationDeg)
+    if (j == 0) gap += 2 * std::numbers::pi;
+    if (hues.size() > 1 && gap * 180 / std::numbers::pi < kMinHueSeparationDeg)
       return fail(ErrorCode::kColour, fmt::format("ink profile: inks '{}' and '{}' have the same hue",
                                                   spec.inks[static_cast<size_t>(hues[i].second)].name,
                                                   spec.inks[static_cast<size_t>(hues[j].second)].name));

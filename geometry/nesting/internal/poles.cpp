@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <queue>
 
 namespace tp::geometry::nesting {
@@ -99,7 +100,7 @@ std::vector<Circle> compute_poles(const Polygon& ccw, const PoleLimits& limits) 
     const Circle c = largest_free_circle(ccw, poles, precision);
     if (!(c.r > precision)) break;
     poles.push_back(c);
-    covered += 3.14159265358979323846 * c.r * c.r;
+    covered += std::numbers::pi * c.r * c.r;
     const double coverage = area > 0 ? covered / area : 1.0;
     bool enough = false;
     for (int k = 0; k < 2; ++k)

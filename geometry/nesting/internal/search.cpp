@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace tp::geometry::nesting {
 namespace {
@@ -17,7 +18,7 @@ constexpr double kStepShrink = 0.5;
 // first refinement of each pooled sample and of the final refinement of the best one.
 constexpr double kPreStepInit = 0.25, kPreStepLimit = 0.02;
 constexpr double kFinalStepInit = 0.01, kFinalStepLimit = 0.001;
-constexpr double kDeg = 3.14159265358979323846 / 180.0;
+constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr double kPreRotInit = 5 * kDeg, kPreRotLimit = 1 * kDeg;
 constexpr double kFinalRotInit = 0.5 * kDeg, kFinalRotLimit = 0.05 * kDeg;
 
@@ -121,7 +122,7 @@ bool random_sample(const SearchSpace& space, PlacementEvaluator& eval, const Box
     Pose pose = poses[rng.below(poses.size())];
     if (space.free_rotation) {
       pose.index = -1;
-      pose.angle_rad = rng.uniform(0.0, 2 * 3.14159265358979323846);
+      pose.angle_rad = rng.uniform(0.0, 2 * std::numbers::pi);
     }
     const Box2& b = eval.shape(pose).box;
     double x0 = space.container.min.x - b.min.x, x1 = space.container.max.x - b.max.x;

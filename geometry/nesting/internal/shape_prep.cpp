@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -210,10 +211,9 @@ Polygon inflate_polygon(const Polygon& ccw, double radius_mm, int segments) {
   CGAL::Polygon_2<Epeck> a, disc;
   for (Vec2 v : ccw) a.push_back(Epeck::Point_2(v.x, v.y));
   // Circumscribing the disc (vertices at r / cos(pi/k)) keeps the growth at least r everywhere.
-  const double pi = 3.14159265358979323846;
-  const double rv = radius_mm / std::cos(pi / segments) * (1.0 + 1e-12);
+  const double rv = radius_mm / std::cos(std::numbers::pi / segments) * (1.0 + 1e-12);
   for (int k = 0; k < segments; ++k) {
-    const double ang = 2.0 * pi * (k + 0.5) / segments;
+    const double ang = 2.0 * std::numbers::pi * (k + 0.5) / segments;
     disc.push_back(Epeck::Point_2(rv * std::cos(ang), rv * std::sin(ang)));
   }
   const auto sum = CGAL::minkowski_sum_2(a, disc);

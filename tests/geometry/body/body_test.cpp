@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <map>
+#include <numbers>
 
 #include "geometry/body/body_sdf.h"
 #include "geometry/body/dress_form.h"
@@ -19,7 +20,7 @@ double girth_at(const BodySdf& sdf, double y) {
   double per = 0;
   Vec3 prev{};
   for (int a = 0; a <= 720; ++a) {
-    double th = a * M_PI / 360, r = 0;
+    double th = a * std::numbers::pi / 360, r = 0;
     while (r < 500 && sdf.query({r * std::sin(th), y, r * std::cos(th)}).distance_mm < 0) r += 0.25;
     Vec3 q{r * std::sin(th), y, r * std::cos(th)};
     if (a) per += norm(q - prev);

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -19,7 +20,7 @@ using Pts = std::vector<std::pair<double, double>>;
 /// Maps a piece outline: mirror x -> -x (if set), rotate counter-clockwise by `deg` about the
 /// origin, translate. Written out here, independent of the engine's own transform code.
 inline Pts transform_piece(const Pts& pts, double deg, bool mirror, double tx, double ty) {
-  const double r = deg * 3.14159265358979323846 / 180.0, c = std::cos(r), s = std::sin(r);
+  const double r = deg * std::numbers::pi / 180.0, c = std::cos(r), s = std::sin(r);
   Pts out;
   for (auto [x, y] : pts) {
     if (mirror) x = -x;

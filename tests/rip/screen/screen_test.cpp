@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <numbers>
 #include <numeric>
 
 #include <gtest/gtest.h>
@@ -54,7 +55,7 @@ TEST(BlueNoise, RanksAreAPermutationWithoutLowFrequencyEnergy) {
       for (int y = 0; y < n; ++y)
         for (int x = 0; x < n; ++x)
           if (r[static_cast<size_t>(y) * n + x] < p * n * n)
-            acc += std::polar(1.0, -2 * M_PI * (fx * x + fy * y) / n);
+            acc += std::polar(1.0, -2 * std::numbers::pi * (fx * x + fy * y) / n);
       low += std::norm(acc);
       ++count;
     }

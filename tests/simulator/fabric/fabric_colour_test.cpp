@@ -6,6 +6,7 @@
 
 #include <array>
 #include <cmath>
+#include <numbers>
 
 namespace tp::sim {
 namespace {
@@ -24,7 +25,7 @@ Lab solid(const FabricColourModel& m, std::size_t ink, std::uint8_t level) {
 }
 
 double hue_deg(const Lab& c) {
-  const double h = std::atan2(c.b, c.a) * 180.0 / 3.14159265358979;
+  const double h = std::atan2(c.b, c.a) * 180.0 / std::numbers::pi;
   return h < 0 ? h + 360 : h;
 }
 

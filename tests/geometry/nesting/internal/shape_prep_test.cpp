@@ -7,7 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-
+#include <numbers>
 
 namespace tp::geometry::nesting {
 namespace {
@@ -28,7 +28,7 @@ bool outside(const CGAL::Polygon_2<K>& poly, Vec2 v) {
 Polygon wobbly(int n) {
   Polygon p;
   for (int i = 0; i < n; ++i) {
-    const double a = 2 * 3.14159265358979323846 * i / n;
+    const double a = 2 * std::numbers::pi * i / n;
     const double r = 100 + 1.5 * std::sin(17 * a) + 0.7 * std::cos(5 * a);
     p.push_back({r * std::cos(a), r * std::sin(a)});
   }
@@ -64,7 +64,7 @@ TEST(ShapePrep, InflateCoversEveryPointWithinTheRadius) {
     for (int s = 0; s <= 10; ++s) {
       const Vec2 on = a + (b - a) * (s / 10.0);
       for (int k = 0; k < 24; ++k) {
-        const double ang = 2 * 3.14159265358979323846 * k / 24;
+        const double ang = 2 * std::numbers::pi * k / 24;
         EXPECT_FALSE(outside(e, on + Vec2{std::cos(ang), std::sin(ang)} * (r * 0.999999)));
       }
     }
