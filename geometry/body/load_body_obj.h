@@ -9,10 +9,10 @@
 
 namespace tp::geometry {
 
-/// Parses OBJ text: `v x y z` and `f` lines (v, v/vt, v/vt/vn, v//vn; polygons are fanned;
-/// negative indices count back). Positions are multiplied by `mm_per_unit` (1000 for metres,
-/// 10 for cm, 1 for mm). `source` names the file in errors. Fails with kParse naming the line
-/// on a malformed number, an index out of range, or a file without triangles.
+/// Parses OBJ text with read_obj (geometry/mesh/read_obj.h: v/vt/vn corners, polygons fanned,
+/// negative indices count back) and keeps positions and triangles. Positions are multiplied by `mm_per_unit` (1000 for
+/// metres, 10 for cm, 1 for mm). `source` names the file in errors. Fails with kParse naming the file and line on a
+/// malformed number or an index out of range, and naming the file if it has no triangles.
 [[nodiscard]] Result<BodyMesh> parse_body_obj(std::string_view text, double mm_per_unit, const std::string& source);
 
 /// Reads and parses an OBJ file (see parse_body_obj); kIo if it cannot be read.

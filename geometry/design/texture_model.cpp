@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "geometry/pattern/import/internal/obj_mesh.h"
+#include "geometry/mesh/read_obj.h"
 #include "geometry/pattern/internal/read_file.h"
 
 namespace tp::geometry {
@@ -12,7 +12,7 @@ Result<TextureTransfer> read_texture_model(std::string_view obj_text, const std:
                                            double mm_per_unit) {
   if (!std::isfinite(mm_per_unit) || mm_per_unit <= 0)
     return fail(ErrorCode::kDesign, source_name + ": units scale must be positive");
-  auto mesh = internal::parse_obj(obj_text, source_name);
+  auto mesh = read_obj(obj_text, source_name, {.require_texture_coordinates = true});
   if (!mesh) return fail(mesh.error());
   if (mesh->triangles.empty()) return fail(ErrorCode::kDesign, source_name + ": the textured model has no faces");
   TextureTransfer t;

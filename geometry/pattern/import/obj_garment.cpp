@@ -7,15 +7,13 @@
 #include <numeric>
 #include <set>
 
-#include "geometry/pattern/import/internal/obj_mesh.h"
+#include "geometry/mesh/read_obj.h"
 #include "geometry/pattern/internal/read_file.h"
 #include "geometry/pattern/internal/try.h"
 #include "geometry/pattern/role.h"
 
 namespace tp::geometry {
 namespace {
-
-using internal::ObjMesh;
 
 /// Texture-space triangles with |area| below this (mm²) count as neither way round.
 constexpr double kDegenerateUvArea_mm2 = 1e-12;
@@ -53,7 +51,7 @@ double turn_cos(Vec2 a, Vec2 b, Vec2 c) { return dot(normalized(b - a), normaliz
 }  // namespace
 
 Result<ObjGarment> read_obj_garment(std::string_view text, const std::string& source_name, const PatternImportOptions& options) {
-  TP_TRY(mesh, internal::parse_obj(text, source_name));
+  TP_TRY(mesh, read_obj(text, source_name, {.require_texture_coordinates = true}));
   if (mesh.triangles.empty()) return fail(ErrorCode::kInvalidPattern, source_name + ": no faces");
   const int nt = static_cast<int>(mesh.triangles.size());
 

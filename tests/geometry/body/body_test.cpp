@@ -116,7 +116,7 @@ TEST(BodyObj, ErrorsNameFileAndLine) {
   EXPECT_NE(m.error().message.find("body.obj:2"), std::string::npos) << m.error().message;
   m = parse_body_obj("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 7\n", 1, "body.obj");
   ASSERT_FALSE(m);
-  EXPECT_NE(m.error().message.find("body.obj:4: face index 7 out of range"), std::string::npos) << m.error().message;
+  EXPECT_NE(m.error().message.find("body.obj:4: vertex index 7 out of range"), std::string::npos) << m.error().message;
   m = parse_body_obj("v 0 0 0\n", 1, "empty.obj");
   ASSERT_FALSE(m);
   EXPECT_NE(m.error().message.find("no faces"), std::string::npos);
