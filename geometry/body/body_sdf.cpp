@@ -5,6 +5,7 @@
 #include <cmath>
 #include <unordered_map>
 
+#include "geometry/common/closest_point_on_triangle.h"
 #include "geometry/common/thread_pool.h"
 
 namespace tp::geometry {
@@ -14,33 +15,6 @@ namespace {
 constexpr size_t kMaxNodes = size_t{64} << 20;
 // The nearest-feature walk stops after this many moves (it usually needs one or two).
 constexpr int kMaxWalkSteps = 16;
-
-// Nearest point on triangle abc to p (Ericson, Real-Time Collision Detection 5.1.5) and the
-// feature it lies on: 0 face, 1..3 edge ab/bc/ca, 4..6 vertex a/b/c.
-struct TriPoint {
-  Vec3 point;
-  int feature = 0;
-};
-
-TriPoint closest_on_triangle(Vec3 p, Vec3 a, Vec3 b, Vec3 c) {
-  Vec3 ab = b - a, ac = c - a, ap = p - a;
-  double d1 = dot(ab, ap), d2 = dot(ac, ap);
-  if (d1 <= 0 && d2 <= 0) return {a, 4};
-  Vec3 bp = p - b;
-  double d3 = dot(ab, bp), d4 = dot(ac, bp);
-  if (d3 >= 0 && d4 <= d3) return {b, 5};
-  double vc = d1 * d4 - d3 * d2;
-  if (vc <= 0 && d1 >= 0 && d3 <= 0) return {a + ab * (d1 / (d1 - d3)), 1};
-  Vec3 cp = p - c;
-  double d5 = dot(ab, cp), d6 = dot(ac, cp);
-  if (d6 >= 0 && d5 <= d6) return {c, 6};
-  double vb = d5 * d2 - d1 * d6;
-  if (vb <= 0 && d2 >= 0 && d6 <= 0) return {a + ac * (d2 / (d2 - d6)), 3};
-  double va = d3 * d6 - d5 * d4;
-  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) return {b + (c - b) * ((d4 - d3) / ((d4 - d3) + (d5 - d6))), 2};
-  double denom = 1 / (va + vb + vc);
-  return {a + ab * (vb * denom) + ac * (vc * denom), 0};
-}
 
 double angle_between(Vec3 u, Vec3 v) {
   double nu = norm(u), nv = norm(v);
@@ -133,8 +107,8 @@ Result<BodySdf> BodySdf::build(BodyMesh body, double spacing_mm, int band_cells)
         for (int j = j0; j <= j1; ++j)
           for (int i = i0; i <= i1; ++i) {
             Vec3 p = s.origin_mm_ + Vec3{double(i), double(j), double(k)} * h;
-            TriPoint q = closest_on_triangle(p, V[t[0]], V[t[1]], V[t[2]]);
-            float d = static_cast<float>(norm(p - q.point));
+            TriangleClosestPoint q = closest_point_on_triangle(p, V[t[0]], V[t[1]], V[t[2]]);
+            float d = static_cast<float>(norm(p - q.point_mm));
             size_t local = (static_cast<size_t>(k - k_begin) * s.ny_ + j) * s.nx_ + i;
             if (d < best[local]) {
               best[local] = d;
@@ -230,13 +204,14 @@ BodySdf::Hit BodySdf::query(Vec3 p) const {
     return hit;
   }
   double best = 1e300;
-  TriPoint best_q;
+  TriangleClosestPoint best_q;
   int best_t = -1;
   const auto try_face = [&](int32_t f) {
     if (degenerate_[f]) return false;
     const auto& t = mesh_.triangles[f];
-    TriPoint q = closest_on_triangle(p, mesh_.vertices_mm[t[0]], mesh_.vertices_mm[t[1]], mesh_.vertices_mm[t[2]]);
-    double d = norm(p - q.point);
+    TriangleClosestPoint q =
+        closest_point_on_triangle(p, mesh_.vertices_mm[t[0]], mesh_.vertices_mm[t[1]], mesh_.vertices_mm[t[2]]);
+    double d = norm(p - q.point_mm);
     if (d >= best) return false;
     best = d, best_q = q, best_t = f;
     return true;
@@ -263,11 +238,11 @@ BodySdf::Hit BodySdf::query(Vec3 p) const {
   Vec3 pseudo = best_q.feature == 0   ? face_normal_[best_t]
                 : best_q.feature <= 3 ? edge_normal_[best_t][best_q.feature - 1]
                                       : vertex_normal_[t[best_q.feature - 4]];
-  Vec3 away = p - best_q.point;
+  Vec3 away = p - best_q.point_mm;
   double sign = dot(away, pseudo) >= 0 ? 1.0 : -1.0;
   hit.near = true;
   hit.distance_mm = sign * best;
-  hit.closest_mm = best_q.point;
+  hit.closest_mm = best_q.point_mm;
   hit.normal = best > 1e-9 ? away * (sign / best) : normalized(pseudo);
   return hit;
 }

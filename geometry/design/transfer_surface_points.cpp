@@ -2,26 +2,13 @@
 // the other garment's point there.
 #include "geometry/design/transfer_surface_points.h"
 
+#include "geometry/common/closest_point_on_triangle.h"
 #include "geometry/design/internal/closest_point.h"
 #include "geometry/design/internal/garment_surface.h"
 
 namespace tp::geometry {
 
 using namespace internal;
-
-namespace {
-
-// Barycentric weights of the point of triangle abc nearest to p (p assumed on or near its plane).
-std::array<double, 3> barycentric_3d(Vec3 p, Vec3 a, Vec3 b, Vec3 c) {
-  const Vec3 v0 = b - a, v1 = c - a, v2 = p - a;
-  const double d00 = dot(v0, v0), d01 = dot(v0, v1), d11 = dot(v1, v1), d20 = dot(v2, v0), d21 = dot(v2, v1);
-  const double den = d00 * d11 - d01 * d01;
-  if (den == 0) return {1, 0, 0};
-  const double v = (d11 * d20 - d01 * d21) / den, w = (d00 * d21 - d01 * d20) / den;
-  return {1 - v - w, v, w};
-}
-
-}  // namespace
 
 Result<std::vector<PiecePoint>> locate_on_pieces(const Pattern& pattern, const Garment& garment,
                                                  const std::vector<Vec3>& points_mm) {
@@ -42,7 +29,7 @@ Result<std::vector<PiecePoint>> locate_on_pieces(const Pattern& pattern, const G
       at.bary[static_cast<size_t>(k)] = 1;
       corner[static_cast<size_t>(k)] = S.at(chart, at).position_mm;
     }
-    const ChartLocation loc{tri, barycentric_3d(hit.point_mm, corner[0], corner[1], corner[2])};
+    const ChartLocation loc{tri, closest_point_on_triangle(hit.point_mm, corner[0], corner[1], corner[2]).bary};
     out.push_back({S.chart(chart).piece->piece, S.chart_position(chart, loc), p - hit.point_mm});
   }
   return out;

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <cstdint>
 
+#include "geometry/common/closest_point_on_triangle.h"
+
 namespace tp::geometry::internal {
 namespace {
 
@@ -52,30 +54,9 @@ class SpatialHash {
   SelfCollisionScratch::Hash& b_;
 };
 
-// Closest point to p on triangle (a, b, c) as barycentric weights (Ericson, Real-Time Collision
-// Detection 5.1.5).
+// Closest point to p on triangle (a, b, c) as barycentric weights.
 std::array<double, 3> closest_on_triangle(Vec3 p, Vec3 a, Vec3 b, Vec3 c) {
-  const Vec3 ab = b - a, ac = c - a, ap = p - a;
-  const double d1 = dot(ab, ap), d2 = dot(ac, ap);
-  if (d1 <= 0 && d2 <= 0) return {1, 0, 0};
-  const Vec3 bp = p - b;
-  const double d3 = dot(ab, bp), d4 = dot(ac, bp);
-  if (d3 >= 0 && d4 <= d3) return {0, 1, 0};
-  const double vc = d1 * d4 - d3 * d2;
-  if (vc <= 0 && d1 >= 0 && d3 <= 0) { const double v = d1 / (d1 - d3); return {1 - v, v, 0}; }
-  const Vec3 cp = p - c;
-  const double d5 = dot(ab, cp), d6 = dot(ac, cp);
-  if (d6 >= 0 && d5 <= d6) return {0, 0, 1};
-  const double vb = d5 * d2 - d1 * d6;
-  if (vb <= 0 && d2 >= 0 && d6 <= 0) { const double w = d2 / (d2 - d6); return {1 - w, 0, w}; }
-  const double va = d3 * d6 - d5 * d4;
-  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) {
-    const double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
-    return {0, 1 - w, w};
-  }
-  const double denom = 1 / (va + vb + vc);
-  const double v = vb * denom, w = vc * denom;
-  return {1 - v - w, v, w};
+  return closest_point_on_triangle(p, a, b, c).bary;
 }
 
 // Closest points of segments p0-p1 and q0-q1 as parameters (s, t) in [0, 1].
