@@ -20,6 +20,7 @@
 #include <thread>
 
 #include "tests/scenarios/jobs/run_command.h"
+#include "tests/support/files.h"
 #include "tests/support/paths.h"
 
 namespace tp::test {
@@ -28,11 +29,6 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 using namespace std::chrono_literals;
-
-std::string read_file(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-}
 
 // A job folder as zip bytes (libzip), the way a client would send it.
 std::string zip_folder(const fs::path& dir, const fs::path& zip_path) {
@@ -46,7 +42,7 @@ std::string zip_folder(const fs::path& dir, const fs::path& zip_path) {
     zip_file_add(z, rel.c_str(), src, ZIP_FL_OVERWRITE);
   }
   zip_close(z);
-  return read_file(zip_path);
+  return read_text(zip_path);
 }
 
 // One printd with its own state, outputs and an ephemeral HTTP port read from its log.
@@ -79,7 +75,7 @@ class Printd {
     const std::regex port_re(R"(HTTP API on https?://[^ ]+:(\d+))");
     for (int i = 0; i < 200; ++i) {
       std::smatch m;
-      const std::string log = read_file(root_ / "printd.log");
+      const std::string log = read_text(root_ / "printd.log");
       if (std::regex_search(log, m, port_re)) {
         port_ = std::stoi(m[1]);
         return true;
@@ -108,7 +104,7 @@ class Printd {
     c.set_read_timeout(30, 0);
     return c;
   }
-  std::string log() const { return read_file(root_ / "printd.log"); }
+  std::string log() const { return read_text(root_ / "printd.log"); }
   const fs::path& root() const { return root_; }
   int port() const { return port_; }
   int exit_code() const { return exit_code_; }
@@ -281,7 +277,7 @@ TEST(HttpApi, UploadsAreCheckedAsPackages) {
   const fs::path bad = d.root() / "bad-job";
   fs::create_directories(bad);
   fs::copy(example("shirt-front-flat"), bad, fs::copy_options::recursive);
-  json manifest = json::parse(read_file(bad / "job.json"));
+  json manifest = read_json(bad / "job.json");
   manifest["print"]["dpi"] = "lots";
   std::ofstream(bad / "job.json") << manifest.dump();
   auto r = c.Post("/api/v1/jobs", zip_folder(bad, d.root() / "bad.zip"), "application/zip");
@@ -295,7 +291,7 @@ TEST(HttpApi, UploadsAreCheckedAsPackages) {
   // A folder as multipart files (the browser's folder upload).
   httplib::MultipartFormDataItems items;
   for (const auto& e : fs::directory_iterator(example("shirt-front-flat")))
-    items.push_back({"files", read_file(e.path()), e.path().filename().string(), "application/json"});
+    items.push_back({"files", read_text(e.path()), e.path().filename().string(), "application/json"});
   auto mp = c.Post("/api/v1/jobs", items);
   ASSERT_TRUE(mp);
   EXPECT_EQ(mp->status, 201) << mp->body;

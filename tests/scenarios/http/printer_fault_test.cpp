@@ -15,6 +15,7 @@
 #include <thread>
 
 #include "tests/scenarios/jobs/run_command.h"
+#include "tests/support/files.h"
 #include "tests/support/paths.h"
 
 namespace tp::test {
@@ -23,11 +24,6 @@ namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
 using namespace std::chrono_literals;
-
-std::string read_text(const fs::path& p) {
-  std::ifstream in(p);
-  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-}
 
 TEST(HttpPrinterFault, CoverOpenShowsInPrinterRouteAndEvents) {
   const fs::path root = fs::temp_directory_path() / ("tp-http-fault-" + std::to_string(::getpid()));

@@ -12,6 +12,7 @@
 #include <thread>
 
 #include "tests/scenarios/jobs/run_command.h"
+#include "tests/support/files.h"
 #include "tests/support/paths.h"
 
 namespace tp::test {
@@ -95,8 +96,7 @@ fs::path job_named(const fs::path& dir, const std::string& name) {
   const fs::path job = dir / name;
   fs::create_directories(dir);
   fs::copy(source_dir() / "examples/shirt-front-flat", job, fs::copy_options::recursive);
-  std::ifstream in(job / "job.json");
-  json j = json::parse(in);
+  json j = read_json(job / "job.json");
   j["name"] = name;
   j["marker"]["time_limit_s"] = 1;
   std::ofstream(job / "job.json") << j.dump(2);
@@ -132,8 +132,7 @@ TEST(Daemon, SubmittedJobsSurviveARestart) {
   d.start();
   EXPECT_EQ(d.wait_end("first"), "done");
   EXPECT_EQ(d.wait_end("second"), "done");
-  std::ifstream in(root / "out/second/report.json");
-  const json rep = json::parse(in);
+  const json rep = read_json(root / "out/second/report.json");
   EXPECT_EQ(rep["state"], "done");
   EXPECT_GT(rep["print"]["swaths_total"].get<int>(), 0);
   EXPECT_EQ(rep["print"]["printer"], "none");
@@ -148,16 +147,14 @@ TEST(Daemon, TheHotFolderFilesGoodJobsUnderDoneAndRefusedOnesUnderFailed) {
   const fs::path good = job_named(root / "staging", "hot-good");
   const fs::path bad = job_named(root / "staging", "hot-bad");
   {
-    std::ifstream in(bad / "job.json");
-    json j = json::parse(in);
+    json j = read_json(bad / "job.json");
     j["marker"]["fabric_width"] = "wide";
     std::ofstream(bad / "job.json") << j.dump(2);
   }
   fs::rename(bad, root / "hot/hot-bad");
   fs::rename(good, root / "hot/hot-good");
   ASSERT_TRUE(wait_for(root / "hot/failed/hot-bad/error.txt", 30s));
-  std::ifstream err(root / "hot/failed/hot-bad/error.txt");
-  const std::string message((std::istreambuf_iterator<char>(err)), std::istreambuf_iterator<char>());
+  const std::string message = read_text(root / "hot/failed/hot-bad/error.txt");
   EXPECT_NE(message.find("/marker/fabric_width"), std::string::npos) << message;
   ASSERT_TRUE(wait_for(root / "hot/done/hot-good/report.json", 180s)) << d.state_of("hot-good");
   EXPECT_FALSE(fs::exists(root / "hot/hot-good"));

@@ -7,19 +7,13 @@
 #include <sstream>
 
 #include "tests/scenarios/jobs/run_command.h"
+#include "tests/support/files.h"
 #include "tests/support/paths.h"
 
 namespace tp::test {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string read_text(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 // The words of a bash array assignment `NAME=(a b c)` in the script.
 std::vector<std::string> bash_array(const std::string& script, const std::string& name) {

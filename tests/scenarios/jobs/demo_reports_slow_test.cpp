@@ -8,6 +8,7 @@
 
 #include "tests/scenarios/jobs/report_schema.h"
 #include "tests/scenarios/jobs/run_command.h"
+#include "tests/support/files.h"
 #include "tests/support/paths.h"
 
 namespace tp::test {
@@ -25,8 +26,7 @@ TEST_P(DemoReport, PrintedOnTheSimulatorItMatchesTheSchema) {
   ASSERT_EQ(r.exit_code, 0) << r.output;
   auto valid = validate_report(out / "report.json");
   EXPECT_EQ(valid.exit_code, 0) << valid.output;
-  std::ifstream in(out / "report.json");
-  const auto rep = nlohmann::json::parse(in);
+  const auto rep = read_json(out / "report.json");
   EXPECT_EQ(rep["state"], "done");
   EXPECT_GT(rep["estimate"]["print_time_s"].get<double>(), 0);
   EXPECT_GT(rep["measured"]["print_time_s"].get<double>(), 0);

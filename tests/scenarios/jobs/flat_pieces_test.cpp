@@ -10,6 +10,7 @@
 #include "geometry/samples/garments.h"
 #include "geometry/samples/sizes.h"
 #include "tests/scenarios/jobs/run_command.h"
+#include "tests/support/files.h"
 #include "tests/support/paths.h"
 
 namespace tp::test {
@@ -17,18 +18,6 @@ namespace {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
-
-json read_json(const fs::path& p) {
-  std::ifstream in(p);
-  return json::parse(in);
-}
-
-std::string read_text(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
 
 // The sample skirt (size M) with a 60 x 40 mm label that no stitch joins, as a native pattern.
 geometry::Pattern skirt_with_label() {

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "tests/scenarios/jobs/run_command.h"
+#include "tests/support/files.h"
 #include "tests/support/paths.h"
 
 namespace tp::test {
@@ -32,8 +33,7 @@ TEST(GarmentObj, AssimpOpensTheGarmentWithItsPrintAsTextureAndUvsInTheUnitSquare
   // The skirt example without a printer: the garment stage and the outputs are what matter here.
   const fs::path job = scratch_dir("garment_obj") / "job";
   fs::create_directories(job);
-  std::ifstream in(source_dir() / "examples/skirt-marbling/job.json");
-  json j = json::parse(in);
+  json j = read_json(source_dir() / "examples/skirt-marbling/job.json");
   j["marker"]["time_limit_s"] = 1;
   std::ofstream(job / "job.json") << j.dump(2);
   const fs::path out = job.parent_path() / "out";
@@ -71,8 +71,7 @@ TEST(GarmentObj, AssimpOpensTheGarmentWithItsPrintAsTextureAndUvsInTheUnitSquare
               bf["garment_share"].c_str(), bf["distinct_colours"].c_str(), bf["hue_overlap"].c_str());
 
   // The texture is a valid PNG at the resolution the report gives.
-  std::ifstream rin(out / "report.json");
-  const json rep = json::parse(rin);
+  const json rep = read_json(out / "report.json");
   const json& files = rep["garment"]["files"];
   EXPECT_EQ(files["obj"], "garment.obj");
   EXPECT_EQ(files["mtl"], "garment.mtl");

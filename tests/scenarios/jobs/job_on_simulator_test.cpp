@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "tests/scenarios/jobs/run_command.h"
+#include "tests/support/files.h"
 #include "tests/support/paths.h"
 
 namespace tp::test {
@@ -16,11 +17,6 @@ namespace {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
-
-json read_json(const fs::path& p) {
-  std::ifstream in(p);
-  return json::parse(in);
-}
 
 // Mean grey level (0..1) of each cell of a cols x rows grid laid over the whole image.
 std::vector<double> cell_means(const fs::path& file, int cols, int rows) {

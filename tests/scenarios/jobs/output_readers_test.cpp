@@ -9,6 +9,7 @@
 
 #include "tests/scenarios/jobs/report_schema.h"
 #include "tests/scenarios/jobs/run_command.h"
+#include "tests/support/files.h"
 #include "tests/support/paths.h"
 
 namespace tp::test {
@@ -70,8 +71,7 @@ TEST_F(OutputReaders, EzdxfReadsTheCutFileAsR12WithAamaTextPointDrillsAndAnnotat
   EXPECT_LE(ex1, hx1);
   EXPECT_LE(ey1, hy1);
   // The roll along DXF X: the header's X extent is the marker length.
-  std::ifstream rep(*out_ / "report.json");
-  const auto report = nlohmann::json::parse(rep);
+  const auto report = read_json(*out_ / "report.json");
   EXPECT_NEAR(hx1, report["marker"]["length_mm"].get<double>(), 0.01);
   EXPECT_NEAR(hy1, report["marker"]["fabric_width_mm"].get<double>(), 0.01);
 }
@@ -123,8 +123,7 @@ TEST_F(OutputReaders, TheReportMatchesItsSchema) {
       << "python3-jsonschema missing (scripts/lib.sh TP_PACKAGES installs it)";
   auto done = validate_report(*out_ / "report.json");
   EXPECT_EQ(done.exit_code, 0) << done.output;
-  std::ifstream in(*out_ / "report.json");
-  const auto rep = nlohmann::json::parse(in);
+  const auto rep = read_json(*out_ / "report.json");
   EXPECT_EQ(rep["schema"], "tp-report/1");
   EXPECT_TRUE(rep["warnings"].is_array());
   for (const char* ink : {"cyan", "magenta", "yellow", "black"}) {
@@ -143,8 +142,7 @@ TEST_F(OutputReaders, TheReportMatchesItsSchema) {
   const fs::path job = scratch_dir("report_failed") / "job";
   fs::copy(source_dir() / "examples/shirt-front-flat", job, fs::copy_options::recursive);
   std::ofstream(job / "motif.png") << "not an image";
-  std::ifstream jin(job / "job.json");
-  auto j = nlohmann::json::parse(jin);
+  auto j = read_json(job / "job.json");
   j["design"]["layers"][1].erase("procedural");
   j["design"]["layers"][1]["image"] = "motif.png";
   std::ofstream(job / "job.json") << j.dump(2);

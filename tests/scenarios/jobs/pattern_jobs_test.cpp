@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "tests/scenarios/jobs/run_command.h"
+#include "tests/support/files.h"
 #include "tests/support/paths.h"
 
 namespace tp::test {
@@ -14,11 +15,6 @@ namespace {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
-
-json read_json(const fs::path& p) {
-  std::ifstream in(p);
-  return json::parse(in);
-}
 
 // A job package in `dir` holding FreeSewing's teagan (size 34) and the given garment fields.
 fs::path teagan_job(const fs::path& dir, const json& garment_extra, bool body) {

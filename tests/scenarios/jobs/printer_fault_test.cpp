@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "tests/scenarios/jobs/run_command.h"
+#include "tests/support/files.h"
 #include "tests/support/paths.h"
 
 namespace tp::test {
@@ -45,8 +46,7 @@ TEST_P(PrinterFaultJob, IsReportedAsThePrintersFault) {
   const std::string expected = std::string("print: printer fault: ") + c.words;
   EXPECT_NE(r.output.find(expected), std::string::npos) << r.output;
 
-  std::ifstream in(out / "report.json");
-  const json rep = json::parse(in);
+  const json rep = read_json(out / "report.json");
   EXPECT_EQ(rep["state"], "failed");
   const std::string error = rep.value("error", "");
   EXPECT_EQ(error.rfind(expected, 0), 0u) << error;

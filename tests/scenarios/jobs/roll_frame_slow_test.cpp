@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "tests/scenarios/jobs/run_command.h"
+#include "tests/support/files.h"
 #include "tests/support/paths.h"
 
 namespace tp::test {
@@ -46,8 +47,7 @@ double mean_difference(const std::vector<double>& a, const std::vector<double>& 
 fs::path run_job(const std::string& name, const std::function<void(const fs::path&, json&)>& edit) {
   const fs::path job = scratch_dir(name) / "job";
   fs::copy(source_dir() / "examples/shirt-front-flat", job, fs::copy_options::recursive);
-  std::ifstream in(job / "job.json");
-  json j = json::parse(in);
+  json j = read_json(job / "job.json");
   edit(job, j);
   std::ofstream(job / "job.json") << j.dump(2);
   const fs::path out = job.parent_path() / "out";
@@ -63,8 +63,7 @@ constexpr double kSameImage = 0.07;
 
 // Fabric against marker (the roll frame), as printed and read right to left: {same, mirrored}.
 std::pair<double, double> fabric_vs_marker(const fs::path& out) {
-  std::ifstream in(out / "report.json");
-  const json rep = json::parse(in);
+  const json rep = read_json(out / "report.json");
   const int cols = static_cast<int>(rep["marker"]["fabric_width_mm"].get<double>() / 10);
   const int rows = static_cast<int>(rep["marker"]["length_mm"].get<double>() / 10);
   const auto marker = cells(out / "marker.png", cols, rows, false);
@@ -95,8 +94,7 @@ TEST(RollFrameOptions, SublimationPrintsTheMirrorImage) {
   std::printf("sublimation: fabric vs marker %.4f, vs its mirror %.4f\n", same, mirrored);
   EXPECT_LT(mirrored, kSameImage);
   EXPECT_GT(same, 2 * mirrored);
-  std::ifstream in(out / "report.json");
-  const json rep = json::parse(in);
+  const json rep = read_json(out / "report.json");
   bool warned = false;
   for (const auto& w : rep["warnings"]) warned = warned || w.get<std::string>().find("sublimation") != std::string::npos;
   EXPECT_TRUE(warned) << rep["warnings"].dump();

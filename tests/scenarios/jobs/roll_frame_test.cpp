@@ -15,6 +15,7 @@
 
 #include "geometry/pattern/import/dxf_aama.h"
 #include "tests/scenarios/jobs/run_command.h"
+#include "tests/support/files.h"
 #include "tests/support/paths.h"
 
 namespace tp::test {
@@ -24,13 +25,6 @@ namespace fs = std::filesystem;
 using geometry::Affine2;
 using geometry::Vec2;
 constexpr double kMmPerInch = 25.4;
-
-std::string read_text(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
 
 /// A DXF file as (code, value) pairs.
 std::vector<std::pair<int, std::string>> dxf_pairs(const std::string& text) {

@@ -20,6 +20,7 @@
 #include <thread>
 
 #include "tests/scenarios/jobs/run_command.h"
+#include "tests/support/files.h"
 #include "tests/support/paths.h"
 
 namespace tp::test {
@@ -32,19 +33,12 @@ using Clock = std::chrono::steady_clock;
 
 const char* const kJobName = "resume-shirt";
 
-json load(const fs::path& p) {
-  std::ifstream in(p);
-  if (!in) return json();
-  json j = json::parse(in, nullptr, false);
-  return j.is_discarded() ? json() : j;
-}
-
 // The flat shirt front in four passes: 13 swaths of a one-piece marker.
 fs::path make_job(const fs::path& dir) {
   const fs::path job = dir / kJobName;
   fs::create_directories(dir);
   fs::copy(source_dir() / "examples/shirt-front-flat", job, fs::copy_options::recursive);
-  json j = load(job / "job.json");
+  json j = read_json_or_null(job / "job.json");
   j["name"] = kJobName;
   // A work budget, not seconds: separate runs (the clean one, each killed one) nest the same
   // marker whatever the load, and a resume reuses the stored one.
@@ -154,7 +148,7 @@ class PrintRoom {
 
   /// Swaths below this are on the fabric, from the printer's memory (-1 before the job).
   int printed_next() const {
-    json m = load(root_ / "printer-memory.json");
+    json m = read_json_or_null(root_ / "printer-memory.json");
     return m.is_object() ? m.value("last_printed_next", -1) : -1;
   }
 
@@ -234,9 +228,9 @@ struct Outcome {
 Outcome collect(const PrintRoom& room, bool synthetic = false) {
   Outcome o;
   const fs::path dir = synthetic ? room.root() / "sim" : room.root() / "sim" / (std::string("1-") + kJobName);
-  const json report = load(room.root() / "out" / kJobName / "report.json");
+  const json report = read_json_or_null(room.root() / "out" / kJobName / "report.json");
   if (report.is_object() && report.contains("marker")) o.marker_mm = report["marker"].value("length_mm", 0.0);
-  const json printer = load(dir / "printer.json");
+  const json printer = read_json_or_null(dir / "printer.json");
   if (printer.is_object()) {
     const json c = printer.value("counters", json::object());
     o.swaths_printed = c.value("swaths_printed", 0u);
@@ -315,11 +309,6 @@ TEST(KillResume, TheFabricAfterKillsEqualsACleanRunDropForDrop) {
     EXPECT_TRUE(o.width == clean.width && o.height == clean.height && o.pixels == clean.pixels)
         << k.name << ": the fabric is not the clean run's pixel for pixel";
   }
-}
-
-std::string read_text(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
 }
 
 // The HTTP ports printd logged, one per start, oldest first.
@@ -425,7 +414,7 @@ Outcome synthetic_with_kill(const std::string& name, int kill_at, bool kill_prin
   }
   room.wait_exit();
   Outcome o = collect(room, true);
-  const json result = load(room.root() / "result.json");
+  const json result = read_json_or_null(room.root() / "result.json");
   o.state = result.is_object() && result.value("error", "").empty() && fs::exists(room.root() / "result.json") ? "done" : "failed";
   return o;
 }
