@@ -8,11 +8,11 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include <cstdlib>
 #include <filesystem>
 #include <string>
 #include <vector>
 
+#include "host/session/sim_reexec.h"
 #include "tests/support/paths.h"
 
 namespace tp::test {
@@ -21,7 +21,7 @@ namespace tp::test {
 /// whose exit status was checked; `out` (if given) receives printsim's output folder.
 inline bool rerun_under_printsim(const std::vector<std::string>& printsim_args = {},
                                  std::filesystem::path* out = nullptr) {
-  if (std::getenv("TP_PRINTSIM")) return true;
+  if (host::under_printsim()) return true;
   const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
   const std::string name = std::string(info->test_suite_name()) + "." + info->name();
   const auto dir = scratch_dir("printsim-" + name);

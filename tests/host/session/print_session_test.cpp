@@ -10,6 +10,7 @@
 
 #include "device/firmware/controller.h"
 #include "device/firmware/firmware_transport.h"
+#include "host/session/sim_reexec.h"
 #include "host/session/synthetic_run.h"
 
 namespace tp::host {
@@ -328,7 +329,7 @@ TEST(PrintSession, RefusesJobIdZeroWhichThePrinterReportsAsNoJob) {
 }
 
 TEST(PrintSession, RefusesThePrintsimPrinterOutsidePrintsim) {
-  if (std::getenv("TP_PRINTSIM")) GTEST_SKIP() << "running under printsim";
+  if (under_printsim()) GTEST_SKIP() << "running under printsim";
   PrinterConfig cfg;
   cfg.printer = PrinterChoice::kSim;
   auto s = PrintSession::open(cfg);
