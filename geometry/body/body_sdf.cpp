@@ -7,6 +7,7 @@
 
 #include "geometry/common/closest_point_on_triangle.h"
 #include "geometry/common/thread_pool.h"
+#include "geometry/common/tolerances.h"
 
 namespace tp::geometry {
 namespace {
@@ -243,7 +244,7 @@ BodySdf::Hit BodySdf::query(Vec3 p) const {
   hit.near = true;
   hit.distance_mm = sign * best;
   hit.closest_mm = best_q.point_mm;
-  hit.normal = best > 1e-9 ? away * (sign / best) : normalized(pseudo);
+  hit.normal = best > kSamePoint_mm ? away * (sign / best) : normalized(pseudo);
   return hit;
 }
 

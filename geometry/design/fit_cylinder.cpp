@@ -11,10 +11,14 @@
 namespace tp::geometry {
 namespace {
 
+/// A point this much (relative to the radius) outside a circle is still in it, so a circle through
+/// three points contains them despite rounding.
+constexpr double kRadiusSlackRel = 1e-12;
+
 struct Circle {
   Vec2 c;
   double r = -1;
-  bool contains(Vec2 p) const { return norm(p - c) <= r * (1 + 1e-12) + 1e-9; }
+  bool contains(Vec2 p) const { return norm(p - c) <= r * (1 + kRadiusSlackRel) + kBoundarySlack; }
 };
 
 Circle from2(Vec2 a, Vec2 b) { return {(a + b) * 0.5, norm(a - b) * 0.5}; }

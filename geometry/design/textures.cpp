@@ -5,6 +5,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "geometry/common/tolerances.h"
+
 namespace tp::geometry {
 namespace {
 
@@ -91,7 +93,7 @@ ImageRgba8 stripes(int w, int h, int count, bool vertical, const std::vector<Rgb
     const double a = i / period, b = (i + 1) / period;
     const int sa = static_cast<int>(std::floor(a));
     Rgba8 c = colours[static_cast<size_t>(sa % static_cast<int>(colours.size()))];
-    if (std::floor(b) > sa && b - std::floor(b) > 1e-9) {
+    if (std::floor(b) > sa && b - std::floor(b) > kCeilSlack) {
       const Rgba8 next = colours[static_cast<size_t>((sa + 1) % static_cast<int>(colours.size()))];
       c = mix(c, next, (b - std::floor(b)) / (b - a));
     }

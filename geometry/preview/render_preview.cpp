@@ -6,6 +6,8 @@
 #include <limits>
 #include <vector>
 
+#include "geometry/common/tolerances.h"
+
 namespace tp::geometry {
 namespace {
 
@@ -14,6 +16,8 @@ constexpr double kAmbient = 0.35;
 const Vec3 kLightDir = normalized(Vec3{-0.35, 0.45, 1.0});
 // Piece outlines are drawn this wide in output pixels.
 constexpr double kSeamWidthPx = 1.2;
+/// Triangles of less area than this (px²) are edge-on to the camera and not drawn.
+constexpr double kMinTriangleArea_px2 = 1e-12;
 
 struct Camera {
   PreviewView view;
@@ -53,7 +57,7 @@ struct Canvas {
   void triangle(Vec3 a, Vec3 b, Vec3 c, Vec3 colour) {
     Vec3 pa = to_px(a), pb = to_px(b), pc = to_px(c);
     double area = (pb.x - pa.x) * (pc.y - pa.y) - (pb.y - pa.y) * (pc.x - pa.x);
-    if (std::abs(area) < 1e-12) return;
+    if (std::abs(area) < kMinTriangleArea_px2) return;
     int x0 = std::max(0, static_cast<int>(std::floor(std::min({pa.x, pb.x, pc.x}))));
     int x1 = std::min(w - 1, static_cast<int>(std::ceil(std::max({pa.x, pb.x, pc.x}))));
     int y0 = std::max(0, static_cast<int>(std::floor(std::min({pa.y, pb.y, pc.y}))));
@@ -122,7 +126,7 @@ ImageRgba8 render_preview(const Garment& garment, const BodyMesh* body, PreviewV
   if (o.draw_body && body)
     for (const Vec3& p : body->vertices_mm) { Vec3 v = cam.to_view(p); box.add({v.x, v.y}); }
   if (box.empty()) box.add({0, 0}), box.add({1, 1});
-  cv.scale = 0.9 * std::min(cv.w / std::max(box.width(), 1e-9), cv.h / std::max(box.height(), 1e-9));
+  cv.scale = 0.9 * std::min(cv.w / std::max(box.width(), kMinDivisor), cv.h / std::max(box.height(), kMinDivisor));
   cv.ox = cv.w / 2.0 - (box.min.x + box.max.x) / 2 * cv.scale;
   cv.oy = cv.h / 2.0 + (box.min.y + box.max.y) / 2 * cv.scale;
 

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <limits>
 
+#include "geometry/common/tolerances.h"
+
 namespace tp::geometry::internal {
 namespace {
 
@@ -13,6 +15,10 @@ namespace {
 constexpr double kMaxMitre = 4.0;
 // Slack on t and d when accepting a quad solution (numerical noise on shared mitre rays).
 constexpr double kParamSlack = 1e-9;
+/// |n0 + n1|² below this: the two normals are opposite (the outline turns back on itself), no mitre.
+constexpr double kOppositeNormals = 1e-12;
+/// A quadratic whose square term is below this, relative to its linear one, is solved as linear.
+constexpr double kNegligibleSquareTerm = 1e-12;
 // Boundary turns sharper than this are corners whose mitre the band triangles must respect.
 constexpr double kSharpTurn_rad = 0.35;
 
@@ -38,7 +44,7 @@ AllowanceSource::AllowanceSource(const GarmentSurface& surface) : surface_(surfa
       Vec2 bis = n0 + n1;
       const double len2 = dot(bis, bis);
       // Mitre: along the bisector, long enough to sit at unit distance from both segments' lines.
-      Vec2 mv = len2 > 1e-12 ? bis * (2.0 / len2) : n0;
+      Vec2 mv = len2 > kOppositeNormals ? bis * (2.0 / len2) : n0;
       if (norm(mv) > kMaxMitre) mv = normalized(mv) * kMaxMitre;
       m[k] = mv;
     }
@@ -55,7 +61,7 @@ int solve_quad(Vec2 x, Vec2 p0, Vec2 e, Vec2 b, Vec2 cc, double (&t_out)[2], dou
   const double qc = cross(q, b);
   double roots[2];
   int count = 0;
-  if (std::abs(qa) < 1e-12 * (std::abs(qb) + 1e-12)) {
+  if (std::abs(qa) < kNegligibleSquareTerm * (std::abs(qb) + kNegligibleSquareTerm)) {
     if (std::abs(qb) > 0) roots[count++] = -qc / qb;
   } else {
     const double disc = qb * qb - 4 * qa * qc;
@@ -131,14 +137,14 @@ SeamCoordinates AllowanceSource::seam_coordinates(int piece, Vec2 x) const {
       best_fallback = dist2;
       fallback = {static_cast<int>(k), tn, std::sqrt(dist2)};
     }
-    const double reach = best_d * kMaxMitre + 1e-9;
+    const double reach = best_d * kMaxMitre + kBoundarySlack;
     if (dist2 > reach * reach) continue;
     // Solve x = p0 + t e + d (b + t c) for t, d: the quad between the mitre rays at both ends.
     double ts[2], ds[2];
     const int count = solve_quad(x, p0, e, m[k], m[(k + 1) % n] - m[k], ts, ds);
     for (int r = 0; r < count; ++r) {
       const double t = ts[r], d = ds[r];
-      if (t < -kParamSlack || t > 1 + kParamSlack || d < -1e-9) continue;
+      if (t < -kParamSlack || t > 1 + kParamSlack || d < -kBoundarySlack) continue;
       if (d < best_d) {
         best_d = d;
         best = {static_cast<int>(k), std::clamp(t, 0.0, 1.0), std::max(0.0, d)};

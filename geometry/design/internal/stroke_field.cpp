@@ -6,6 +6,8 @@
 #include <limits>
 #include <queue>
 
+#include "geometry/common/tolerances.h"
+
 namespace tp::geometry::internal {
 namespace {
 
@@ -34,7 +36,7 @@ double segment_segment_distance(Vec3 p, Vec3 q, Vec3 a, Vec3 b) {
   if (A <= 0 || E <= 0) return best;
   const double C = dot(d1, r), B = dot(d1, d2);
   const double den = A * E - B * B;
-  if (den <= 1e-12 * A * E) return best;
+  if (den <= kParallelDeterminant * A * E) return best;
   const double s = std::clamp((B * F - C * E) / den, 0.0, 1.0);
   const double t = std::clamp((B * s + F) / E, 0.0, 1.0);
   return std::min(best, norm((p + d1 * s) - (a + d2 * t)));

@@ -15,6 +15,8 @@ namespace {
 
 // Weight of x against y in the left-bottom score: mostly left, then low.
 constexpr double kLeftWeight = 10.0;
+/// Candidate positions are nudged by this fraction of the strip width (at least 1 mm), off an exact touch.
+constexpr double kNudgeRel = 1e-9;
 
 // Scores collision-free placements by how far left and low they are; +inf on collision.
 class LeftBottomEvaluator : public PlacementEvaluator {
@@ -43,7 +45,7 @@ bool fallback_place(Layout& layout, int k, double x_limit, QueryScratch& scratch
   const NestContext& ctx = layout.ctx();
   const int type = ctx.copy_type[k];
   const double used = layout.used_x_hi();
-  const double nudge = 1e-9 * std::max(1.0, ctx.y_hi - ctx.y_lo);
+  const double nudge = kNudgeRel * std::max(1.0, ctx.y_hi - ctx.y_lo);
   for (size_t pi = 0; pi < ctx.poses[type].size(); ++pi) {
     const OrientedShape& o = ctx.oriented[type][pi];
     if (o.box.height() > ctx.y_hi - ctx.y_lo) continue;

@@ -21,10 +21,12 @@ constexpr double kFinalStepInit = 0.01, kFinalStepLimit = 0.001;
 constexpr double kDeg = std::numbers::pi / 180.0;
 constexpr double kPreRotInit = 5 * kDeg, kPreRotLimit = 1 * kDeg;
 constexpr double kFinalRotInit = 0.5 * kDeg, kFinalRotLimit = 0.05 * kDeg;
+/// Two poses whose angles differ by less than this (rad) have the same rotation.
+constexpr double kSameAngle_rad = 1e-9;
 
 bool same_place(const Sample& a, const Sample& b, double threshold) {
   return a.pose.index == b.pose.index && a.pose.mirror == b.pose.mirror &&
-         std::fabs(a.pose.angle_rad - b.pose.angle_rad) < 1e-9 && norm(a.t - b.t) < threshold;
+         std::fabs(a.pose.angle_rad - b.pose.angle_rad) < kSameAngle_rad && norm(a.t - b.t) < threshold;
 }
 
 // Keeps the `capacity` best samples that are pairwise distinct.

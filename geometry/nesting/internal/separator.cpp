@@ -6,6 +6,8 @@
 #include <cmath>
 #include <limits>
 
+#include "geometry/common/tolerances.h"
+
 namespace tp::geometry::nesting {
 namespace {
 
@@ -49,7 +51,7 @@ SearchSpace search_space(const Layout& layout, int k) {
   s.free_rotation = ctx.free_rotation[type];
   s.container = Box2{{ctx.x_lo, ctx.y_lo}, {layout.x_hi(), ctx.y_hi}};
   const Box2& b = ctx.oriented[type][0].box;
-  s.min_dim = std::max(1e-9, std::min(b.width(), b.height()));
+  s.min_dim = std::max(kMinDivisor, std::min(b.width(), b.height()));
   return s;
 }
 

@@ -24,6 +24,8 @@ using Epeck = CGAL::Exact_predicates_exact_constructions_kernel;
 // outline's bounding-box diagonal, and of its square).
 constexpr double kDuplicateVertexRel = 1e-12;
 constexpr double kCollinearRel = 1e-14;
+/// The inflating disc is this much (relative) larger, so rounding never leaves the growth short of r.
+constexpr double kInflateRadiusRel = 1e-12;
 
 double diagonal(const Polygon& p) {
   Box2 b = bounds(p);
@@ -211,7 +213,7 @@ Polygon inflate_polygon(const Polygon& ccw, double radius_mm, int segments) {
   CGAL::Polygon_2<Epeck> a, disc;
   for (Vec2 v : ccw) a.push_back(Epeck::Point_2(v.x, v.y));
   // Circumscribing the disc (vertices at r / cos(pi/k)) keeps the growth at least r everywhere.
-  const double rv = radius_mm / std::cos(std::numbers::pi / segments) * (1.0 + 1e-12);
+  const double rv = radius_mm / std::cos(std::numbers::pi / segments) * (1.0 + kInflateRadiusRel);
   for (int k = 0; k < segments; ++k) {
     const double ang = 2.0 * std::numbers::pi * (k + 0.5) / segments;
     disc.push_back(Epeck::Point_2(rv * std::cos(ang), rv * std::sin(ang)));
