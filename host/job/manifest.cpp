@@ -266,7 +266,10 @@ void read_print(FieldReader p, const JobPackage* pkg, PrintSpec& s) {
   p.reject_unknown({"printer", "printer_model", "dpi", "passes", "bidirectional", "screen", "levels", "icc_profile",
                     "ink_limit_pct", "separations_tiff", "preview_dpi", "transfer", "calibration"});
   if (auto v = p.choice("transfer", false, {"direct", "sublimation"})) s.transfer = *v;
-  if (auto v = p.choice("printer", false, {"sim", "usb"})) s.printer = parse_printer_choice(*v).value_or(s.printer);
+  // A job prints on the simulator or a real printer; "none" is a run's override only (printctl, printd).
+  const std::vector<std::string> job_printers{std::string(to_string(PrinterChoice::kSim)),
+                                              std::string(to_string(PrinterChoice::kUsb))};
+  if (auto v = p.choice("printer", false, job_printers)) s.printer = parse_printer_choice(*v).value_or(s.printer);
   read_asset(p, "printer_model", false, pkg, s.printer_model);
   if (auto v = p.integer("dpi", false, 25, 2400)) s.dpi = *v;
   if (auto v = p.integer("passes", false, 1, 8)) {
