@@ -10,6 +10,7 @@
 #include "host/pipeline/internal/pipeline_state.h"
 #include "host/pipeline/internal/plan_steps.h"
 #include "host/pipeline/internal/printed_seams.h"
+#include "host/pipeline/printer_check.h"
 #include "host/pipeline/printer_model.h"
 #include "host/session/print_session.h"
 #include "rip/job/rip_job.h"
@@ -69,26 +70,6 @@ std::vector<Cue> roll_cues(const PipelineState& ps) {
     cues.push_back({device::CueKind::kCut, std::llround((ps.marker_start_mm[k] + ps.markers[k].length_mm) * 1000), 0});
   std::sort(cues.begin(), cues.end(), [](const Cue& a, const Cue& b) { return a.y_um < b.y_um; });
   return cues;
-}
-
-// The connected printer must be the one the swaths are planned for.
-Status check_printer(const device::PrinterModel& model, const device::IdentifyMsg& id) {
-  auto mismatch = [&](const std::string& what, const std::string& printer, const std::string& job) {
-    return fail(ErrorCode::kPrinter, "printer '" + id.model + "' " + what + " " + printer + ", the job plans for " + job +
-                                         " (choose the printer model with print.printer_model)");
-  };
-  if (id.dpi_x != model.dpi_x || id.dpi_y != model.dpi_y)
-    return mismatch("prints at", std::to_string(id.dpi_x) + "x" + std::to_string(id.dpi_y) + " dpi",
-                    std::to_string(model.dpi_x) + "x" + std::to_string(model.dpi_y) + " dpi");
-  if (id.nozzles_per_ink != model.nozzles_per_ink)
-    return mismatch("has", std::to_string(id.nozzles_per_ink) + " nozzles per ink", std::to_string(model.nozzles_per_ink));
-  if (id.bits_per_pixel != model.bits_per_pixel)
-    return mismatch("takes", std::to_string(id.bits_per_pixel) + " bits per pixel", std::to_string(model.bits_per_pixel));
-  if (id.inks.size() != model.inks.size())
-    return mismatch("has", std::to_string(id.inks.size()) + " inks", std::to_string(model.inks.size()));
-  for (size_t i = 0; i < id.inks.size(); ++i)
-    if (id.inks[i] != model.inks[i].name) return mismatch("has ink", id.inks[i], model.inks[i].name);
-  return {};
 }
 
 // Counts per named ink channel, in the printer model's ink order.
