@@ -186,7 +186,9 @@ Status stage_design(PipelineState& ps) {
     }
     ps.renderer_base = std::move(*base);
   }
-  auto renderer = geometry::make_piece_renderer(ps.renderer_base, ps.design, &ps.cancel);
+  auto renderer = ps.overlay_margin_mm > 0
+                      ? geometry::make_overlay_renderer(ps.renderer_base, ps.design, ps.overlay_margin_mm, &ps.cancel)
+                      : geometry::make_piece_renderer(ps.renderer_base, ps.design, &ps.cancel);
   if (!renderer) {
     auto code = renderer.error().code == geometry::ErrorCode::kCancelled ? ErrorCode::kCancelled : ErrorCode::kPipeline;
     return fail(code, renderer.error().message);
