@@ -42,7 +42,7 @@ TEST(MakeOverlayRenderer, KeepsOnlyWhatPrintsAndRendersAsTheFullRenderer) {
   auto full_again = make_piece_renderer(*base, number_layer());
   ASSERT_TRUE(full_again);
   long printed = 0;
-  for (double dpi : {50.0, 300.0}) {
+  for (double dpi : {50.0, 150.0}) {
     for (int piece = 0; piece < (*overlay)->piece_count(); ++piece) {
       EXPECT_EQ((*overlay)->cut_outline_mm(piece), (*full_again)->cut_outline_mm(piece));
       const PieceImage want = render_piece_image(**full_again, piece, dpi);
