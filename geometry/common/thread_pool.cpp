@@ -2,12 +2,18 @@
 #include "geometry/common/thread_pool.h"
 
 #include <algorithm>
+#include <system_error>
 
 namespace tp {
 
 ThreadPool::ThreadPool(int threads) {
   if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  for (int w = 1; w < threads; ++w) workers_.emplace_back([this, w] { worker_loop(w); });
+  // A system out of threads (EAGAIN) leaves the pool with the workers it has: the caller's
+  // thread does the rest, and results do not depend on the split.
+  try {
+    for (int w = 1; w < threads; ++w) workers_.emplace_back([this, w] { worker_loop(w); });
+  } catch (const std::system_error&) {
+  }
 }
 
 ThreadPool::~ThreadPool() {

@@ -14,6 +14,7 @@
 #include "geometry/design/internal/band_mesh.h"
 #include "geometry/design/internal/closest_point.h"
 #include "geometry/design/internal/garment_surface.h"
+#include "geometry/design/internal/keep_printing_triangles.h"
 #include "geometry/design/internal/piece_marks.h"
 #include "geometry/design/internal/render_builder.h"
 #include "geometry/design/raster/mip_image.h"
@@ -253,6 +254,20 @@ Result<std::unique_ptr<PieceRenderer>> make_piece_renderer(const std::shared_ptr
     build_grid(pd);
   });
   return std::unique_ptr<PieceRenderer>(std::move(r));
+}
+
+Result<std::unique_ptr<PieceRenderer>> make_overlay_renderer(const std::shared_ptr<const RendererBase>& base,
+                                                             const Design& design, double margin_mm,
+                                                             const CancelToken* cancel) {
+  if (!(margin_mm > 0)) return fail(ErrorCode::kInvalidArgument, "overlay renderer: margin_mm must be > 0");
+  auto r = make_piece_renderer(base, design, cancel);
+  if (!r) return r;
+  auto& dr = static_cast<DesignRenderer&>(**r);
+  for (PieceData& pd : dr.pieces_) keep_printing_triangles(pd, dr.layers_, margin_mm);
+  const bool strokes = std::any_of(dr.layers_.begin(), dr.layers_.end(),
+                                   [](const LayerRuntime& L) { return L.kind == LayerRuntime::Kind::kStroke; });
+  if (!strokes) dr.base_.reset();
+  return r;
 }
 
 Result<std::unique_ptr<PieceRenderer>> make_piece_renderer(const Pattern& pattern, const Garment& garment,

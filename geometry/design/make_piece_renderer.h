@@ -48,6 +48,15 @@ struct RendererBase;
 [[nodiscard]] Result<std::unique_ptr<PieceRenderer>> make_piece_renderer(
     const std::shared_ptr<const RendererBase>& base, const Design& design, const CancelToken* cancel = nullptr);
 
+/// The renderer of `design` on a prepared base keeping only what prints, for an overlay drawn over
+/// another renderer (an order copy's text and labels): per piece the render triangles a layer or
+/// mark prints on and those within `margin_mm` of them; the base itself is released unless a
+/// stroke layer samples it. Renders as make_piece_renderer does wherever it prints, for pixels up
+/// to margin_mm / 3; elsewhere it leaves the output as it is.
+[[nodiscard]] Result<std::unique_ptr<PieceRenderer>> make_overlay_renderer(
+    const std::shared_ptr<const RendererBase>& base, const Design& design, double margin_mm = 5,
+    const CancelToken* cancel = nullptr);
+
 /// Builds the renderer. Each piece pixel maps to (piece, triangle, barycentric) -> 3D point ->
 /// the layers' colours, composited bottom first with their opacities; the seam allowance (widths
 /// and corners from `finishing`) carries the partner piece's strip across sewn seams and the

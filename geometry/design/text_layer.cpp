@@ -19,6 +19,9 @@ namespace tp::geometry {
 
 namespace {
 
+// Transparent texels kept around the ink when the image is cropped to it.
+constexpr int kInkBorderPx = 2;
+
 // Owners of the FreeType and HarfBuzz objects, released in reverse order.
 struct FtLibrary {
   FT_Library lib = nullptr;
@@ -185,8 +188,31 @@ Result<TextImage> render_text_image(const std::string& text, const TextStyle& st
     auto ch = [&](std::uint8_t f, std::uint8_t o) { return to_u8((f * af + o * ao * (1 - af)) / a); };
     out.image.pixels[k] = {ch(fc.r, oc.r), ch(fc.g, oc.g), ch(fc.b, oc.b), to_u8(255 * a)};
   }
-  out.width_mm = fill.w / style.px_per_mm;
-  out.height_mm = fill.h / style.px_per_mm;
+  // Only the ink's box (and a border of transparent texels for the filter) is kept: the layout
+  // box's empty rows and bearings would cost memory in every copy's renderer for nothing.
+  int x0 = fill.w, x1 = -1, y0 = fill.h, y1 = -1;
+  for (int y = 0; y < fill.h; ++y)
+    for (int x = 0; x < fill.w; ++x)
+      if (out.image.pixels[static_cast<size_t>(y) * fill.w + x].a > 0)
+        x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
+  if (x1 >= x0) {
+    x0 = std::max(0, x0 - kInkBorderPx), y0 = std::max(0, y0 - kInkBorderPx);
+    x1 = std::min(fill.w - 1, x1 + kInkBorderPx), y1 = std::min(fill.h - 1, y1 + kInkBorderPx);
+    ImageRgba8 crop;
+    crop.width_px = x1 - x0 + 1;
+    crop.height_px = y1 - y0 + 1;
+    crop.source = out.image.source;
+    crop.pixels.reserve(static_cast<size_t>(crop.width_px) * crop.height_px);
+    for (int y = y0; y <= y1; ++y) {
+      const auto row = out.image.pixels.begin() + static_cast<std::ptrdiff_t>(y) * fill.w;
+      crop.pixels.insert(crop.pixels.end(), row + x0, row + x1 + 1);
+    }
+    out.offset_right_mm = ((x0 + x1 + 1) / 2.0 - fill.w / 2.0) / style.px_per_mm;
+    out.offset_up_mm = (fill.h / 2.0 - (y0 + y1 + 1) / 2.0) / style.px_per_mm;
+    out.image = std::move(crop);
+  }
+  out.width_mm = out.image.width_px / style.px_per_mm;
+  out.height_mm = out.image.height_px / style.px_per_mm;
   return out;
 }
 

@@ -23,12 +23,16 @@ struct TextStyle {
   double px_per_mm = 10;  ///< image resolution (10 px/mm = 254 dpi)
 };
 
-/// The rendered text: an RGBA image, transparent where there is no ink, and its size in mm
-/// (the planar layer's width and height, so letters come out `cap_height_mm` tall).
+/// The rendered text: an RGBA image cropped to its ink (plus a transparent border), and its size
+/// in mm (the planar layer's width and height, so letters come out `cap_height_mm` tall). The
+/// line's layout box (advance by ascender + descender) is centred on the layer's centre: the
+/// image's centre lies `offset_right_mm` to the right of and `offset_up_mm` above that point.
 struct TextImage {
   ImageRgba8 image;
   double width_mm = 0;
   double height_mm = 0;
+  double offset_right_mm = 0;
+  double offset_up_mm = 0;
   int glyphs = 0;  ///< glyphs placed by the shaper
 };
 

@@ -14,6 +14,10 @@ namespace tp::host::internal {
 
 namespace {
 
+// Around a copy's text and labels its overlay keeps this much of the garment: exact down to
+// pixels of a third of it (every print and preview resolution the job writes).
+constexpr double kOverlayMarginMm = 5;
+
 std::string stem_of(const std::string& size) {
   std::string out;
   for (char c : size) out += (std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_') ? c : '_';
@@ -291,10 +295,13 @@ Status stage_order_design(PipelineState& ps) {
         c->ps->garment_is_3d = s.ps->garment_is_3d;
         c->ps->body = s.ps->body;
         c->ps->measurements = s.ps->measurements;
+        // A layered copy's renderer holds only the region its text and labels print on.
+        if (layered) c->ps->overlay_margin_mm = kOverlayMarginMm;
         if (auto st = stage_design(*c->ps); !st)
           return fail(st.error().with_context("order size '" + s.spec.size + "' copy " + std::to_string(c->copy)));
         renderer = std::shared_ptr<const geometry::PieceRenderer>(std::move(c->ps->renderer));
         c->ps->design = {};  // the renderer holds what it samples
+        c->ps->renderer_base.reset();
         if (layered) {
           renderer = std::make_shared<OrderCopyRenderer>(base_renderer, renderer);
           // The copy prints every layer: the base's, then its own.

@@ -128,9 +128,13 @@ Result<geometry::Design> build_design(const Job& job) {
                     "job.json: /design/layers/" + std::to_string(i) + "/text: " + t.error().message);
       geometry::PlanarProjection p;
       p.image = std::make_shared<const geometry::ImageRgba8>(std::move(t->image));
-      p.centre_mm = vec3(s.centre_mm);
       p.normal = geometry::normalized(vec3(s.normal));
       p.up = geometry::normalized(vec3(s.up));
+      // The image is cropped to the ink: its centre sits off the line's centre in the image
+      // plane (right = -normal x up, as the planar projection sees it).
+      const geometry::Vec3 up = geometry::normalized(p.up - p.normal * geometry::dot(p.up, p.normal));
+      const geometry::Vec3 right = geometry::cross(-p.normal, up);
+      p.centre_mm = vec3(s.centre_mm) + right * t->offset_right_mm + up * t->offset_up_mm;
       p.width_mm = t->width_mm;
       p.height_mm = t->height_mm;
       layer.content = std::move(p);
@@ -186,7 +190,9 @@ Status stage_design(PipelineState& ps) {
     }
     ps.renderer_base = std::move(*base);
   }
-  auto renderer = geometry::make_piece_renderer(ps.renderer_base, ps.design, &ps.cancel);
+  auto renderer = ps.overlay_margin_mm > 0
+                      ? geometry::make_overlay_renderer(ps.renderer_base, ps.design, ps.overlay_margin_mm, &ps.cancel)
+                      : geometry::make_piece_renderer(ps.renderer_base, ps.design, &ps.cancel);
   if (!renderer) {
     auto code = renderer.error().code == geometry::ErrorCode::kCancelled ? ErrorCode::kCancelled : ErrorCode::kPipeline;
     return fail(code, renderer.error().message);

@@ -83,11 +83,15 @@ nlohmann::json per_ink(const Counts& counts, const device::PrinterModel& model) 
 nlohmann::json rip_json(const rip::RipStats& st, const device::PrinterModel& model) {
   std::vector<std::uint64_t> drops;
   for (const auto& d : st.drops) drops.push_back(d[1] + d[2] + d[3]);
-  return {{"width_px", st.width_px},       {"height_px", st.height_px},
-          {"area_m2", st.area_m2},         {"swaths", st.swaths},
+  return {{"width_px", st.width_px},
+          {"height_px", st.height_px},
+          {"area_m2", st.area_m2},
+          {"swaths", st.swaths},
           {"compression_ratio", st.compression_ratio},
           {"drops_per_ink", per_ink(drops, model)},
-          {"threads", st.threads},         {"wall_s", st.wall_s}};
+          {"threads", st.threads},
+          {"wall_s", st.wall_s},
+          {"colour_table_mib", static_cast<double>(st.colour_table_bytes) / (1 << 20)}};
 }
 
 // Print time and swath count before printing, from the marker and the printer model: the pass

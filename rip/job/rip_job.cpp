@@ -113,6 +113,8 @@ Result<RipStats> run_rip(const BandSource& source, const device::PrinterModel& p
   stats.area_m2 = (ss.width_px * kMmPerInch / printer.dpi_x) * (static_cast<double>(height) * kMmPerInch / printer.dpi_y) * 1e-6;
   stats.plan = *plan;
   stats.threads = pool.size();
+  // 2^24 colours, four inks packed in 32 bits (InkConverterSettings::direct_table).
+  if (cs.direct_table && inks.size() <= 4) stats.colour_table_bytes = std::uint64_t{4} << 24;
 
   RipProgress prog;
   prog.rows_total = height;

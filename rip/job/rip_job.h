@@ -84,6 +84,9 @@ struct RipStats {
   /// Drops fired per ink and drop code (index 1 .. 3; index 0 unused), whole job.
   std::vector<std::array<std::uint64_t, 4>> drops;
   int threads = 1;
+  /// Bytes of the table of every 8-bit colour, built for jobs of kDirectTableMinPixels or more with
+  /// up to four inks (64 MiB, whatever the roll length; 0 when pixels interpolate the grid).
+  std::uint64_t colour_table_bytes = 0;
   double wall_s = 0;
   double render_cpu_s = 0, colour_cpu_s = 0, screen_cpu_s = 0, swath_cpu_s = 0;  ///< thread CPU time, summed
   double sink_s = 0, separations_s = 0;  ///< wall time in the sink and in writing separations

@@ -13,6 +13,10 @@ namespace {
 // The map has at most this many cells on a side.
 constexpr int kMaxCells = 2048;
 constexpr float kEmpty = -std::numeric_limits<float>::infinity();
+// Around a non-repeating image the map reaches this far past its edge (cells and mm): the
+// per-pixel filter reads one cell beyond a point's own, triangle classification one more.
+constexpr int kImageReachCells = 4;
+constexpr double kImageReachMm = 2.0;
 
 }  // namespace
 
@@ -30,6 +34,22 @@ DepthMap::DepthMap(const PlanarField& field, const GarmentSurface& surface, doub
   origin_ = box.min - Vec2{2 * cell_mm_, 2 * cell_mm_};
   nx_ = static_cast<int>(std::ceil(box.width() / cell_mm_)) + 5;
   ny_ = static_cast<int>(std::ceil(box.height() / cell_mm_)) + 5;
+  // Only the cells under the image (and the filter's reach around it) are ever read for a
+  // non-repeating image: the map keeps the garment-wide cell size but covers just those cells.
+  if (const Box2 image = field.image_box_mm(); !image.empty()) {
+    const double reach_mm = kImageReachCells * cell_mm_ + kImageReachMm;
+    const int ix0 = std::max(0, static_cast<int>(std::floor((image.min.x - reach_mm - origin_.x) / cell_mm_)));
+    const int iy0 = std::max(0, static_cast<int>(std::floor((image.min.y - reach_mm - origin_.y) / cell_mm_)));
+    const int ix1 = std::min(nx_, static_cast<int>(std::ceil((image.max.x + reach_mm - origin_.x) / cell_mm_)) + 1);
+    const int iy1 = std::min(ny_, static_cast<int>(std::ceil((image.max.y + reach_mm - origin_.y) / cell_mm_)) + 1);
+    origin_ = origin_ + Vec2{ix0 * cell_mm_, iy0 * cell_mm_};
+    nx_ = std::max(0, ix1 - ix0);
+    ny_ = std::max(0, iy1 - iy0);
+    if (nx_ == 0 || ny_ == 0) {
+      nx_ = ny_ = 0;
+      return;
+    }
+  }
   depth_.assign(static_cast<size_t>(nx_) * ny_, kEmpty);
   auto splat = [&](int ix, int iy, double d) {
     if (ix < 0 || iy < 0 || ix >= nx_ || iy >= ny_) return;

@@ -132,6 +132,14 @@ Vec3 PlanarField::plane_coordinates(Vec3 p) const {
   return {dot(q, right_), dot(q, up_), dot(q, normal_)};
 }
 
+Box2 PlanarField::image_box_mm() const {
+  Box2 b;
+  if (image->wrap_u() == Wrap::kRepeat || image->wrap_v() == Wrap::kRepeat) return b;
+  b.add({-width_mm_ / 2, -height_mm_ / 2});
+  b.add({width_mm_ / 2, height_mm_ / 2});
+  return b;
+}
+
 FieldSample PlanarField::eval(const SurfacePoint& p) const {
   const Vec3 c = plane_coordinates(p.position_mm);
   const double facing = dot(p.normal, normal_);

@@ -44,6 +44,8 @@ class PlanarField : public TextureField {
   FieldSample eval(const SurfacePoint& p) const override;
   /// Plane coordinates (mm along right, up) and depth (mm towards the image) of a point.
   Vec3 plane_coordinates(Vec3 p) const;
+  /// The image's rectangle in plane coordinates (mm), or an empty box when it repeats.
+  Box2 image_box_mm() const;
 
  private:
   Vec3 centre_, normal_, right_, up_;

@@ -46,6 +46,9 @@ struct PipelineState {
   /// design stage reuses it; else the stage prepares it from the garment and finishing.
   std::shared_ptr<const geometry::RendererBase> renderer_base;
   geometry::RenderOptions render_options;         ///< the design stage's renderer (defaults: 600 dpi accuracy)
+  /// > 0: the design is an overlay (an order copy's text and labels over its size's renderer), so
+  /// the renderer keeps only what prints and this margin around it (make_overlay_renderer).
+  double overlay_margin_mm = 0;
   std::vector<geometry::Marker> markers;          ///< as nested, each in its own frame
   geometry::Marker roll;                          ///< all markers one after another on the roll
   std::vector<double> marker_start_mm;            ///< where each marker starts on the roll

@@ -40,6 +40,41 @@ TEST(TextLayer, CapitalsComeOutTheAskedHeight) {
   EXPECT_GT(t->width_mm, 30);  // two capitals are wider than one is tall
 }
 
+TEST(TextLayer, TheImageIsCroppedToTheInkAndItsOffsetKeepsTheBaseline) {
+  TextStyle s;
+  s.cap_height_mm = 30;
+  s.px_per_mm = 10;
+  auto caps = render_text_image("H", s);
+  auto descender = render_text_image("Hy", s);
+  ASSERT_TRUE(caps && descender);
+  // Only a border of at most 2 transparent texels is left around the ink.
+  for (const TextImage* t : {&*caps, &*descender}) {
+    InkBox any;
+    for (int y = 0; y < t->image.height_px; ++y)
+      for (int x = 0; x < t->image.width_px; ++x)
+        if (t->image.at(x, y).a > 0) {
+          any.x0 = std::min(any.x0, x), any.x1 = std::max(any.x1, x);
+          any.y0 = std::min(any.y0, y), any.y1 = std::max(any.y1, y);
+        }
+    EXPECT_LE(any.x0, 2);
+    EXPECT_LE(any.y0, 2);
+    EXPECT_GE(any.x1, t->image.width_px - 3);
+    EXPECT_GE(any.y1, t->image.height_px - 3);
+  }
+  // The H's foot (the baseline) lies at the same height above the line's centre in both: the
+  // image of "Hy" reaches lower, and its offset says by how much.
+  auto foot_up_mm = [](const TextImage& t) {
+    int foot = -1;
+    for (int y = 0; y < t.image.height_px; ++y)
+      for (int x = 0; x < t.image.width_px / 4; ++x)
+        if (t.image.at(x, y).a > 127) foot = y;
+    return t.offset_up_mm + t.height_mm / 2 - (foot + 1) / 10.0;
+  };
+  EXPECT_GT(caps->height_mm, 30);
+  EXPECT_GT(descender->height_mm, caps->height_mm + 5);
+  EXPECT_NEAR(foot_up_mm(*caps), foot_up_mm(*descender), 0.1);
+}
+
 TEST(TextLayer, GlyphsAreInkedInTheColourAndTheSameEveryTime) {
   TextStyle s;
   s.cap_height_mm = 20;
