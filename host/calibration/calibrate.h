@@ -30,6 +30,8 @@ struct CalibrateOptions {
   /// Print the drop-limit, linearisation and ink-limit charts first and print the profiling
   /// charts through their results (host/calibration/ink_calibration.h). Not with measurements.
   bool ink_charts = true;
+  /// Drop limit: where an ink comes within this of its heaviest patch (host/calibration/drop_limit.h).
+  double drop_limit_de00 = 1.0;
 };
 
 struct CalibrateSummary {

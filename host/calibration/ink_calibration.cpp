@@ -106,7 +106,8 @@ Result<InkCalibrationResult> calibrate_inks(const CalibrateOptions& o, const fs:
     auto readings = print_device_chart(o, "drop-limit-" + std::to_string(first / 3 + 1), amounts, extras, log, r);
     if (!readings) return fail(readings.error());
     for (size_t c = first; c < std::min(n, first + 3); ++c) {
-      auto d = drop_limit(single_channel_ramp(*readings, static_cast<int>(c - first)), r.inks[c].name);
+      auto d =
+          drop_limit(single_channel_ramp(*readings, static_cast<int>(c - first)), r.inks[c].name, o.drop_limit_de00);
       if (!d) return fail(d.error());
       r.inks[c].drop_limit = *d;
       r.inks[c].linearisation.points = {{0.0, 0.0}, {1.0, *d}};

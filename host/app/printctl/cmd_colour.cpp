@@ -48,6 +48,10 @@ void register_colour_commands(CLI::App& app) {
       ->capture_default_str();
   cal->add_option("--precondition", *precondition,
                   "A first profile of this printer and fabric: spread the patches evenly in colour (targen -c)");
+  cal->add_option("--drop-limit-de00", c->drop_limit_de00,
+                  "Drop limit: the amount at which an ink comes within this of its heaviest patch")
+      ->check(CLI::Range(0.1, 10.0))
+      ->capture_default_str();
   auto no_ink_charts = std::make_shared<bool>(false);
   cal->add_flag("--no-ink-charts", *no_ink_charts,
                 "Skip the drop-limit, linearisation and ink-limit charts (the profile alone)");

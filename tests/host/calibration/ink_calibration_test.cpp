@@ -43,6 +43,10 @@ TEST(DropLimit, FindsWhereTheInkStopsChangingColour) {
   ASSERT_TRUE(d) << d.error().message;
   EXPECT_GT(*d, 0.60);  // the last 1 dE00 of a dot-gain ramp spans its top fifth
   EXPECT_LE(*d, 0.80 + 1e-9);
+  auto looser = drop_limit(ramp(0.8, 0.025), "cyan", 3.0);  // within 3 dE00: less ink
+  ASSERT_TRUE(looser);
+  EXPECT_LT(*looser, *d);
+  EXPECT_FALSE(drop_limit(ramp(0.8, 0.025), "cyan", 0));
   auto none = drop_limit(ramp(2.0, 0.05), "cyan");  // never saturates: the heaviest patch
   ASSERT_TRUE(none);
   EXPECT_GT(*none, 0.9);
