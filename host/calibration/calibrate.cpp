@@ -2,11 +2,6 @@
 // profcheck and the calibration set's manifest.
 #include "host/calibration/calibrate.h"
 
-#include <fcntl.h>
-#include <spawn.h>
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <chrono>
 #include <cmath>
 #include <fstream>
@@ -17,129 +12,19 @@
 
 #include "device/model/cgats.h"
 #include "device/model/printer_model_file.h"
-#include "host/calibration/chart_layout.h"
-#include "rip/colour/lab_image.h"
-#include "rip/image/image_io.h"
-
-extern char** environ;
+#include "host/calibration/ink_calibration.h"
+#include "host/calibration/internal/chart_print.h"
+#include "host/calibration/internal/ink_set_json.h"
 
 namespace tp::host {
 
 namespace {
 
 namespace fs = std::filesystem;
+using internal::ChartJobExtras;
+using internal::fmt;
+using internal::run_tool;
 using nlohmann::json;
-
-// Runs a program, its output appended to `log`; fails naming the step and the log.
-Status run_tool(const std::string& step, const std::vector<std::string>& argv, const fs::path& log) {
-  posix_spawn_file_actions_t fa;
-  posix_spawn_file_actions_init(&fa);
-  posix_spawn_file_actions_addopen(&fa, 1, log.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
-  posix_spawn_file_actions_adddup2(&fa, 1, 2);
-  std::vector<char*> args;
-  for (const auto& a : argv) args.push_back(const_cast<char*>(a.c_str()));
-  args.push_back(nullptr);
-  pid_t pid = 0;
-  const int rc = posix_spawnp(&pid, args[0], &fa, nullptr, args.data(), environ);
-  posix_spawn_file_actions_destroy(&fa);
-  if (rc != 0) return fail(ErrorCode::kIo, step + ": cannot run " + argv[0] + " (is package argyll installed?)");
-  int status = 0;
-  if (waitpid(pid, &status, 0) < 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
-    return fail(ErrorCode::kPipeline, step + ": " + argv[0] + " failed; see " + log.string());
-  return {};
-}
-
-fs::path own_dir() {
-  std::error_code ec;
-  return fs::read_symlink("/proc/self/exe", ec).parent_path();
-}
-
-std::string fmt(double v, int decimals = 3) {
-  char b[48];
-  std::snprintf(b, sizeof b, "%.*f", decimals, v);
-  return b;
-}
-
-// The flat job that prints the chart: one rectangular piece carrying the chart picture.
-Status write_chart_job(const fs::path& dir, const ChartLayout& chart, const CalibrateOptions& o) {
-  fs::create_directories(dir);
-  if (auto s = rip::write_png(dir / "chart.png", chart.image, rip::PngChannels::kRgba, chart.geometry.px_per_mm * 25.4); !s)
-    return fail(ErrorCode::kIo, "chart picture: " + s.error().message);
-  const double w = chart.width_mm, h = chart.height_mm;
-  json piece = {{"name", "chart"},
-                {"edges", json::array({json{{"name", "top"}, {"from", {0.0, 0.0}}}, json{{"name", "right"}, {"from", {w, 0.0}}},
-                                       json{{"name", "bottom"}, {"from", {w, h}}}, json{{"name", "left"}, {"from", {0.0, h}}}})}};
-  json pattern = {{"format", "tp-pattern"}, {"version", 1}, {"name", "calibration_chart"}, {"units", "mm"},
-                  {"pieces", json::array({piece})}};
-  std::ofstream(dir / "pattern.json") << pattern.dump(1) << "\n";
-  device::PrinterModel model;
-  if (o.printer_model) {
-    auto m = device::load_printer_model(*o.printer_model);
-    if (!m) return fail(ErrorCode::kValidation, m.error().message);
-    model = *m;
-  }
-  model.fabric = o.fabric;
-  if (auto s = device::validate_printer_model(model); !s) return fail(ErrorCode::kValidation, s.error().message);
-  std::ofstream(dir / "printer.tpm") << device::format_printer_model(model);
-  json job = {{"format", "tp-job/1"},
-              {"name", "calibration-chart"},
-              {"garment", {{"pattern", "pattern.json"}}},
-              {"design", {{"layers", json::array({json{{"type", "planar"},
-                                                       {"name", "chart"},
-                                                       {"image", "chart.png"},
-                                                       {"centre", {w / 2, h / 2, 0.0}},
-                                                       {"normal", {0, 0, 1}},
-                                                       {"up", {0, 1, 0}},
-                                                       {"width", std::to_string(w) + " mm"}}})}}},
-              {"finishing", {{"seam_allowance", "1 mm"}, {"hem_allowance", "1 mm"}, {"notches", false}, {"labels", "none"}}},
-              {"marker", {{"fabric_width", std::to_string(std::ceil(w + 60)) + " mm"}, {"rotations", "fixed"}, {"time_limit_s", 1}}},
-              {"print", {{"printer", "sim"}, {"printer_model", "printer.tpm"}, {"dpi", o.dpi}, {"passes", 1}, {"preview_dpi", 40}}}};
-  std::ofstream(dir / "job.json") << job.dump(1) << "\n";
-  return {};
-}
-
-// Where the chart landed: the black frame's bounding box, and which way round (the mark's corner).
-struct Placement {
-  double x0_mm = 0, y0_mm = 0, sx = 1, sy = 1;  // fabric = origin + scale * chart (negative: flipped)
-};
-
-Result<Placement> locate_chart(const rip::Image3f& lab, const ChartLayout& chart, const fs::path& source) {
-  int x0 = lab.width_px, y0 = lab.height_px, x1 = -1, y1 = -1;
-  for (int y = 0; y < lab.height_px; ++y)
-    for (int x = 0; x < lab.width_px; ++x)
-      if (lab.at(x, y)[0] < 30.f) {
-        x0 = std::min(x0, x);
-        x1 = std::max(x1, x);
-        y0 = std::min(y0, y);
-        y1 = std::max(y1, y);
-      }
-  if (x1 < 0) return fail(ErrorCode::kPipeline, source.string() + ": the chart's black frame is not on the fabric");
-  const double bx0 = x0 / lab.px_per_mm, by0 = y0 / lab.px_per_mm;
-  const double bx1 = (x1 + 1) / lab.px_per_mm, by1 = (y1 + 1) / lab.px_per_mm;
-  const double kx = (bx1 - bx0) / chart.width_mm, ky = (by1 - by0) / chart.height_mm;
-  if (std::abs(kx - 1) > 0.05 || std::abs(ky - 1) > 0.05)
-    return fail(ErrorCode::kPipeline, source.string() + ": the chart printed " + fmt(bx1 - bx0, 1) + " x " + fmt(by1 - by0, 1) +
-                                          " mm, expected " + fmt(chart.width_mm, 1) + " x " + fmt(chart.height_mm, 1));
-  // Try the four mirrorings; the orientation mark is where the fabric is darkest.
-  Placement best;
-  double darkest = 1e9;
-  for (int flip = 0; flip < 4; ++flip) {
-    Placement p;
-    p.sx = flip & 1 ? -kx : kx;
-    p.sy = flip & 2 ? -ky : ky;
-    p.x0_mm = flip & 1 ? bx1 : bx0;
-    p.y0_mm = flip & 2 ? by1 : by0;
-    const int mx = static_cast<int>((p.x0_mm + p.sx * chart.mark_x_mm) * lab.px_per_mm);
-    const int my = static_cast<int>((p.y0_mm + p.sy * chart.mark_y_mm) * lab.px_per_mm);
-    if (mx < 0 || my < 0 || mx >= lab.width_px || my >= lab.height_px) continue;
-    const double l = lab.at(mx, my)[0];
-    if (l < darkest) {
-      darkest = l;
-      best = p;
-    }
-  }
-  return best;
-}
 
 // The first fit line profcheck prints: "... errors(CIEDE2000): max. = 2.41, avg. = 0.62, ...".
 void read_fit(const fs::path& log, CalibrateSummary& s) {
@@ -157,7 +42,8 @@ void read_fit(const fs::path& log, CalibrateSummary& s) {
 // One chart: targen's device values (spread by `guide` when given), printed as a job, found on the
 // fabric and read by the simulated spectrophotometer into `base`.ti3; adds the chart's area.
 Status print_and_measure(const CalibrateOptions& o, const fs::path& base, const fs::path& job, const fs::path& printed,
-                         const std::optional<fs::path>& guide, const fs::path& log, double& area_m2) {
+                         const std::optional<fs::path>& guide, const ChartJobExtras& extras, const fs::path& log,
+                         double& area_m2) {
   std::error_code ec;
   // 1. The chart's device values (targen: RGB printer, optimised full spread).
   std::vector<std::string> targen{"targen", "-v", "-d2", "-f", std::to_string(o.patches)};
@@ -170,37 +56,8 @@ Status print_and_measure(const CalibrateOptions& o, const fs::path& base, const 
   if (auto st = run_tool("targen", targen, log); !st) return st;
   auto ti1 = device::load_cgats(base.string() + ".ti1");
   if (!ti1) return fail(ErrorCode::kPipeline, "targen output: " + ti1.error().message);
-  auto chart = layout_chart(ti1->front(), base.string() + ".ti1");
-  if (!chart) return fail(chart.error());
-  // 2. Printed as a job, on the printer the job names (here: printsim through printctl run).
-  if (auto st = write_chart_job(job, *chart, o); !st) return st;
-  if (auto st = run_tool("chart job",
-                         {(own_dir() / "printctl").string(), "run", job.string(), "--out", printed.string()}, log);
-      !st)
-    return st;
-  area_m2 += chart->width_mm * chart->height_mm * 1e-6;
-  // 3. Where it landed, then the simulated spectrophotometer reads every patch.
-  auto lab = rip::read_image3f(printed / "fabric-lab.tif");
-  if (!lab) return fail(ErrorCode::kPipeline, lab.error().message);
-  auto where = locate_chart(*lab, *chart, printed / "fabric-lab.tif");
-  if (!where) return fail(where.error());
-  device::CgatsTable ti2;
-  ti2.type = "CTI2";
-  ti2.keywords = {{"DESCRIPTOR", "tp calibration chart as printed (patch centres on the fabric)"},
-                  {"ORIGINATOR", "tp printctl calibrate"},
-                  {"COLOR_REP", "RGB"}};
-  ti2.fields = {"SAMPLE_ID", "RGB_R", "RGB_G", "RGB_B", "TP_X_MM", "TP_Y_MM"};
-  for (const auto& p : chart->patches)
-    ti2.rows.push_back({p.id, fmt(p.rgb_pct[0], 4), fmt(p.rgb_pct[1], 4), fmt(p.rgb_pct[2], 4),
-                        fmt(where->x0_mm + where->sx * p.x_mm), fmt(where->y0_mm + where->sy * p.y_mm)});
-  const fs::path ti2_path = base.string() + ".ti2";
-  std::ofstream(ti2_path) << device::format_cgats(ti2);
-  if (auto st = run_tool("measure",
-                         {(own_dir() / "printsim").string(), "measure", "--chart", ti2_path.string(), "--fabric",
-                          (printed / "fabric-lab.tif").string(), "--out", base.string() + ".ti3", "--aperture-mm",
-                          fmt(o.aperture_mm, 2), "--noise", fmt(o.noise_de, 3)},
-                         log);
-      !st)
+  // 2. and 3. Printed as a job, found on the fabric and read.
+  if (auto st = print_chart(o, ti1->front(), base.string() + ".ti1", base, job, printed, extras, log, area_m2); !st)
     return st;
   return check_measurements(base.string() + ".ti3");
 }
@@ -270,12 +127,24 @@ Result<CalibrateSummary> calibrate(const CalibrateOptions& o) {
   const fs::path log = o.out / "calibrate.log";
   const fs::path base = o.out / "profile";
   CalibrateSummary s;
+  InkCalibrationResult ink_result;
 
   if (o.measurements) {
     if (auto st = check_measurements(*o.measurements); !st) return fail(st.error());
     fs::copy_file(*o.measurements, base.string() + ".ti3", fs::copy_options::overwrite_existing, ec);
     if (ec) return fail(ErrorCode::kIo, base.string() + ".ti3: " + ec.message());
   } else {
+    // Drop limits, linearisation and ink limit first: the profiling charts print through them.
+    ChartJobExtras extras;
+    if (o.ink_charts) {
+      auto inks = calibrate_inks(o, log);
+      if (!inks) return fail(inks.error());
+      ink_result = *inks;
+      s.chart_area_m2 += inks->chart_area_m2;
+      s.ink_charts = inks->charts;
+      s.ink_limit_percent = inks->ink_limit_percent;
+      extras.calibration = inks->set;
+    }
     // Each pass prints and reads a chart; a later pass spreads its patches by the profile the
     // passes before it made (targen -c), and the profile is built from every pass's readings.
     std::vector<fs::path> readings;
@@ -294,7 +163,7 @@ Result<CalibrateSummary> calibrate(const CalibrateOptions& o) {
         guide = previous.string() + "-all.icc";
       }
       if (auto st = print_and_measure(o, pass_base, o.out / ("chart-job" + tag), o.out / ("chart-printed" + tag), guide,
-                                      log, s.chart_area_m2);
+                                      extras, log, s.chart_area_m2);
           !st)
         return fail(st.error());
       readings.push_back(pass_base.string() + ".ti3");
@@ -326,7 +195,9 @@ Result<CalibrateSummary> calibrate(const CalibrateOptions& o) {
             {"patches", s.patches},
             {"chart_area_m2", s.chart_area_m2},
             {"fit_de00", {{"mean", s.fit_mean_de00}, {"max", s.fit_max_de00}}},
-            {"seconds", s.seconds}};
+            {"seconds", s.seconds},
+            {"ink_charts", s.ink_charts}};
+  internal::add_ink_fields(m, ink_result.inks, ink_result.ink_limit_percent);
   std::ofstream(o.out / "calibration.json") << m.dump(2) << "\n";
   return s;
 }

@@ -27,6 +27,11 @@ struct CalibrateOptions {
   /// Charts printed: each after the first is spread by the profile of the ones before it; the
   /// profile is built from all of them.
   int passes = 2;
+  /// Print the drop-limit, linearisation and ink-limit charts first and print the profiling
+  /// charts through their results (host/calibration/ink_calibration.h). Not with measurements.
+  bool ink_charts = true;
+  /// Drop limit: where an ink comes within this of its heaviest patch (host/calibration/drop_limit.h).
+  double drop_limit_de00 = 1.0;
 };
 
 struct CalibrateSummary {
@@ -34,6 +39,8 @@ struct CalibrateSummary {
   double chart_area_m2 = 0;        ///< fabric the chart used (0 with --measurements)
   double seconds = 0;
   double fit_mean_de00 = 0, fit_max_de00 = 0;  ///< profcheck of the profile against its measurements
+  int ink_charts = 0;                          ///< drop-limit, linearisation and ink-limit charts printed
+  double ink_limit_percent = 0;                ///< measured total ink limit (0: none measured)
   std::filesystem::path profile;
 };
 

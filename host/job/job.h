@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "host/job/calibration_set.h"
 #include "host/job/printer_choice.h"
 
 namespace tp::host {
@@ -168,6 +169,9 @@ struct PrintSpec {
   std::optional<std::filesystem::path> icc_profile;
   std::optional<std::filesystem::path> calibration;          ///< a calibration set's calibration.json
   std::optional<std::filesystem::path> calibration_profile;  ///< its profile (docs/colour.md)
+  std::optional<CalibrationSet> calibration_set;             ///< the set read: curves, ink limit
+  /// Calibration charts only: the design's R, G, B drive these inks directly (docs/colour.md).
+  std::vector<std::string> device_inks;
   double ink_limit_pct = 280;
   bool separations_tiff = false;
   int preview_dpi = 50;

@@ -264,7 +264,7 @@ void read_marker(FieldReader m, MarkerSpec& s) {
 
 void read_print(FieldReader p, const JobPackage* pkg, PrintSpec& s) {
   p.reject_unknown({"printer", "printer_model", "dpi", "passes", "bidirectional", "screen", "levels", "icc_profile",
-                    "ink_limit_pct", "separations_tiff", "preview_dpi", "transfer", "calibration"});
+                    "ink_limit_pct", "separations_tiff", "preview_dpi", "transfer", "calibration", "device_inks"});
   if (auto v = p.choice("transfer", false, {"direct", "sublimation"})) s.transfer = *v;
   // A job prints on the simulator or a real printer; "none" is a run's override only (printctl, printd).
   const std::vector<std::string> job_printers{std::string(to_string(PrinterChoice::kSim)),
@@ -285,8 +285,22 @@ void read_print(FieldReader p, const JobPackage* pkg, PrintSpec& s) {
   read_asset(p, "icc_profile", false, pkg, s.icc_profile);
   read_asset(p, "calibration", false, pkg, s.calibration);
   if (s.calibration && pkg) {
-    if (auto set = load_calibration_set(*s.calibration)) s.calibration_profile = set->profile;
-    else p.problems().add(p.pointer_of("calibration"), set.error().message);
+    if (auto set = load_calibration_set(*s.calibration)) {
+      if (!set->profile.empty()) s.calibration_profile = set->profile;
+      s.calibration_set = std::move(*set);
+    } else {
+      p.problems().add(p.pointer_of("calibration"), set.error().message);
+    }
+  }
+  if (const nlohmann::json* d = p.raw("device_inks")) {
+    bool ok = d->is_array() && !d->empty() && d->size() <= 3;
+    for (const auto& v : ok ? *d : nlohmann::json::array()) {
+      ok = ok && v.is_string() && !v.get<std::string>().empty();
+      if (ok) s.device_inks.push_back(v.get<std::string>());
+    }
+    if (!ok) p.problems().add(p.pointer_of("device_inks"), "expected 1 to 3 ink names (the inks R, G and B drive)");
+    if (ok && s.calibration_profile)
+      p.problems().add(p.pointer_of("device_inks"), "prints device values: the calibration's profile cannot apply");
   }
   if (auto v = p.number("ink_limit_pct", false, 100, 400)) s.ink_limit_pct = *v;
   if (auto v = p.boolean("separations_tiff", false)) s.separations_tiff = *v;

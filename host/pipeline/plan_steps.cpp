@@ -202,6 +202,7 @@ Result<SwathPlan> SwathPlan::open(PipelineState& ps, const device::PrinterModel&
   }
   if (auto st = add_optional_file(h, "icc_profile", ps.job.print.icc_profile); !st) return fail(st.error());
   if (auto st = add_optional_file(h, "calibration_profile", ps.job.print.calibration_profile); !st) return fail(st.error());
+  if (auto st = add_optional_file(h, "calibration", ps.job.print.calibration); !st) return fail(st.error());
   h.add("printer_model", device::format_printer_model(model));
   sp.key_ = h.hex();
   if (!ps.plan) return sp;

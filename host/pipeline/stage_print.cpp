@@ -19,7 +19,7 @@ namespace tp::host::internal {
 
 namespace {
 
-rip::RipSettings rip_settings(const PipelineState& ps) {
+rip::RipSettings rip_settings(const PipelineState& ps, const device::PrinterModel& printer) {
   const PrintSpec& p = ps.job.print;
   rip::RipSettings s;
   s.passes = p.passes;
@@ -29,6 +29,15 @@ rip::RipSettings rip_settings(const PipelineState& ps) {
   if (p.icc_profile) s.profile_path = *p.icc_profile;
   if (p.calibration_profile) s.calibration_profile = *p.calibration_profile;
   s.ink_limit_percent = p.ink_limit_pct;
+  if (p.calibration_set) {
+    // The set's curves per ink of this printer, and its measured ink limit if that is lower.
+    std::vector<std::string> inks;
+    for (const auto& ink : printer.inks) inks.push_back(ink.name);
+    s.linearisation = linearisation_for(*p.calibration_set, inks);
+    if (p.calibration_set->ink_limit_percent > 0)
+      s.ink_limit_percent = std::min(s.ink_limit_percent, p.calibration_set->ink_limit_percent);
+  }
+  s.device_inks = p.device_inks;
   s.first_swath_index = static_cast<std::uint32_t>(std::max<std::int64_t>(0, ps.options.resume_after_swath + 1));
   if (p.separations_tiff) s.separations.screened_tiff = ps.options.out_dir / "separations.tif";
   s.mirror_print = p.transfer == "sublimation";
@@ -132,7 +141,7 @@ Status stage_print(PipelineState& ps) {
   const PrinterChoice printer = effective_printer(ps.job.print.printer, ps.options.printer_override);
   auto model = job_printer_model(ps.job);
   if (!model) return fail(model.error());
-  rip::RipSettings settings = rip_settings(ps);
+  rip::RipSettings settings = rip_settings(ps, *model);
   auto swath_plan = SwathPlan::open(ps, *model, settings.first_swath_index);
   if (!swath_plan) return fail(swath_plan.error());
   ps.report["estimate"] = print_estimate(ps, *model);

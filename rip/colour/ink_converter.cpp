@@ -84,6 +84,9 @@ struct InkConverter::Table {
   std::unique_ptr<RgbProfileInverse> calibration;  ///< sRGB ahead of `exact` (a calibration set)
   std::vector<ToneCurve> curves;
   std::vector<bool> black;
+  /// Device-value printing: per ink, the sRGB channel (0..2) that drives it directly, or -1.
+  std::vector<int> device_channel;
+  bool device_mode = false;
   double limit_fraction = 0;  ///< sum of ink fractions allowed at nodes (includes rounding margin)
 
   /// Tetrahedral interpolation: the cube splits into six tetrahedra by the order of the three
@@ -152,6 +155,14 @@ struct InkConverter::Table {
   }
 #endif
 
+  /// Device-value printing: the inks `device_channel` names from a 16-bit sRGB node, others none.
+  void device_values(const std::uint16_t* rgb16, double* ink) const {
+    for (int c = 0; c < channels; ++c) {
+      const int k = device_channel[static_cast<size_t>(c)];
+      ink[c] = k < 0 ? 0.0 : 1.0 - rgb16[k] / 65535.0;
+    }
+  }
+
   /// Linearisation then the ink limit, on fractions 0..1.
   void finish_inks(double* ink) const {
     for (int c = 0; c < channels; ++c) {
@@ -195,6 +206,29 @@ Result<InkConverter> InkConverter::create(const InkConverterSettings& s) {
   }
   t->curves = s.linearisation;
   for (const auto& n : s.ink_names) t->black.push_back(is_black(n));
+  t->device_channel.assign(s.ink_names.size(), -1);
+  if (!s.device_inks.empty()) {
+    // Device values: each named ink follows one design channel, nothing else prints.
+    if (s.device_inks.size() > 3)
+      return fail(
+          ErrorCode::kColour,
+          fmt::format("ink converter: device_inks names {} inks; R, G and B drive at most 3", s.device_inks.size()));
+    if (!s.calibration_profile.empty())
+      return fail(ErrorCode::kColour,
+                  "ink converter: device_inks prints device values; a calibration profile cannot apply");
+    for (size_t k = 0; k < s.device_inks.size(); ++k) {
+      const auto it = std::find(s.ink_names.begin(), s.ink_names.end(), s.device_inks[k]);
+      if (it == s.ink_names.end())
+        return fail(ErrorCode::kColour,
+                    fmt::format("ink converter: device_inks: '{}' is not one of the printer's inks ({})",
+                                s.device_inks[k], fmt::join(s.ink_names, ", ")));
+      int& slot = t->device_channel[static_cast<size_t>(it - s.ink_names.begin())];
+      if (slot >= 0)
+        return fail(ErrorCode::kColour, fmt::format("ink converter: device_inks names '{}' twice", s.device_inks[k]));
+      slot = static_cast<int>(k);
+    }
+    t->device_mode = true;
+  }
 
   // The printer profile: named; or the default CMYK one for a plain CMYK printer; or, for inks
   // with typical solids, one built from them.
@@ -254,11 +288,13 @@ Result<InkConverter> InkConverter::create(const InkConverterSettings& s) {
 
   const int g = s.grid_points, nc = t->channels;
   t->grid = g;
-  const int limit_percent = s.ink_limit_percent > 0 ? static_cast<int>(s.ink_limit_percent) : 100 * nc;
+  // Device values are printed as asked: a chart that finds the ink limit must not be held by one.
+  const bool limited = s.ink_limit_percent > 0 && !t->device_mode;
+  const int limit_percent = limited ? static_cast<int>(s.ink_limit_percent) : 100 * nc;
   t->limit_8bit = std::min(255 * nc, limit_percent * 255 / 100);
   // Nodes stay channels/2 units under the limit: per-channel rounding after interpolation adds at
   // most 1/2 unit each.
-  t->limit_fraction = s.ink_limit_percent > 0 ? (t->limit_8bit - 0.5 * nc) / 255.0 : static_cast<double>(nc);
+  t->limit_fraction = limited ? (t->limit_8bit - 0.5 * nc) / 255.0 : static_cast<double>(nc);
 
   // Evaluate every node through the profile in one call.
   const size_t n_nodes = static_cast<size_t>(g) * g * g;
@@ -286,6 +322,7 @@ Result<InkConverter> InkConverter::create(const InkConverterSettings& s) {
   std::vector<double> v(nc);
   for (size_t i = 0; i < n_nodes; ++i) {
     for (int c = 0; c < nc; ++c) v[c] = t->calibration ? calibrated[i * nc + c] : ink[i * nc + c] / 65535.0;
+    if (t->device_mode) t->device_values(&rgb[3 * i], v.data());
     t->finish_inks(v.data());
     for (int c = 0; c < nc; ++c)
       t->nodes[i * t->lanes + c] = static_cast<std::int16_t>(std::lround(v[c] * 255.0 * kNodeScale));
@@ -452,7 +489,14 @@ std::vector<double> InkConverter::convert_exact(geometry::Rgba8 colour) const {
   std::array<double, 3> rgb{colour.r / 255.0, colour.g / 255.0, colour.b / 255.0};
   if (t.calibration) rgb = t.calibration->device_for_srgb({rgb}).front();
   std::vector<double> ink(t.channels);
-  cmsDoTransform(t.exact.get(), rgb.data(), ink.data(), 1);
+  if (t.device_mode) {
+    const std::uint16_t rgb16[3] = {static_cast<std::uint16_t>(colour.r * 257),
+                                    static_cast<std::uint16_t>(colour.g * 257),
+                                    static_cast<std::uint16_t>(colour.b * 257)};
+    t.device_values(rgb16, ink.data());
+  } else {
+    cmsDoTransform(t.exact.get(), rgb.data(), ink.data(), 1);
+  }
   t.finish_inks(ink.data());
   return ink;
 }

@@ -38,6 +38,12 @@ struct InkConverterSettings {
   double ink_limit_percent = 0;
   /// Empty, or one curve per ink (an empty curve is the identity).
   std::vector<ToneCurve> linearisation;
+  /// Empty, or up to three ink names driven directly by the design's R, G and B (ink amount =
+  /// 1 - value / 255, every other ink none): device-value printing for calibration charts
+  /// (drop-limit, linearisation and ink-limit charts, docs/colour.md). The printer profile and
+  /// calibration profile are not used and the ink limit is off; the linearisation curves still
+  /// apply, so a chart can be printed through the curves already measured.
+  std::vector<std::string> device_inks;
   /// LUT nodes per sRGB axis (3D lookup, tetrahedral interpolation): 9..65.
   int grid_points = 33;
   /// Also interpolate every 8-bit sRGB colour once, at creation (up to four inks: 64 MiB, about

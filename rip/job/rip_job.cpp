@@ -72,6 +72,7 @@ Result<RipStats> run_rip(const BandSource& source, const device::PrinterModel& p
   cs.calibration_profile = settings.calibration_profile;
   cs.ink_limit_percent = settings.ink_limit_percent;
   cs.linearisation = settings.linearisation;
+  cs.device_inks = settings.device_inks;
   // A job of many pixels repays building the table of every colour.
   cs.direct_table = static_cast<double>(source.width_px()) * static_cast<double>(source.height_px()) >= kDirectTableMinPixels;
   auto ink = InkConverter::create(cs);

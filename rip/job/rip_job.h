@@ -44,6 +44,7 @@ struct RipSettings {
   std::filesystem::path calibration_profile; ///< a calibration set's RGB profile (InkConverterSettings)
   double ink_limit_percent = 0;         ///< total ink limit, 0 = none
   std::vector<ToneCurve> linearisation; ///< empty or one per printer ink
+  std::vector<std::string> device_inks;  ///< calibration charts: R, G, B drive these inks (InkConverterSettings)
   int band_rows = 128;                  ///< rows rendered per band: a multiple of kRenderTileRows
   int threads = 0;                      ///< 0: all cores
   bool skip_blank_swaths = true;        ///< passes with no ink send no swath (their feed is added to the next)

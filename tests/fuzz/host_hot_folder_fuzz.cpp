@@ -5,6 +5,7 @@
 // fuzz-sources: host/daemon/hot_folder.cpp host/daemon/intake.cpp host/job host/common
 // fuzz-sources: host/session/sim_reexec.cpp geometry/sewing/cloth_material.cpp geometry/samples/sizes.cpp
 // fuzz-sources: geometry/body/measurements.cpp
+// fuzz-sources: rip/colour/tone_curve.cpp rip/common/error.cpp
 #include <unistd.h>
 
 #include <cstddef>

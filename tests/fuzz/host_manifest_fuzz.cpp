@@ -1,6 +1,7 @@
 // tests/fuzz/host_manifest_fuzz.cpp: job.json validation never crashes on any input.
 // fuzz-sources: host/job host/common host/session/sim_reexec.cpp geometry/sewing/cloth_material.cpp
 // fuzz-sources: geometry/samples/sizes.cpp geometry/body/measurements.cpp
+// fuzz-sources: rip/colour/tone_curve.cpp rip/common/error.cpp
 #include <cstddef>
 #include <cstdint>
 #include <string>

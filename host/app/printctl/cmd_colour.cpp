@@ -48,7 +48,15 @@ void register_colour_commands(CLI::App& app) {
       ->capture_default_str();
   cal->add_option("--precondition", *precondition,
                   "A first profile of this printer and fabric: spread the patches evenly in colour (targen -c)");
-  cal->callback([c, printer, measurements, precondition] {
+  cal->add_option("--drop-limit-de00", c->drop_limit_de00,
+                  "Drop limit: the amount at which an ink comes within this of its heaviest patch")
+      ->check(CLI::Range(0.1, 10.0))
+      ->capture_default_str();
+  auto no_ink_charts = std::make_shared<bool>(false);
+  cal->add_flag("--no-ink-charts", *no_ink_charts,
+                "Skip the drop-limit, linearisation and ink-limit charts (the profile alone)");
+  cal->callback([c, printer, measurements, precondition, no_ink_charts] {
+    c->ink_charts = !*no_ink_charts;
     if (!printer->empty()) c->printer_model = *printer;
     if (!precondition->empty()) c->precondition = *precondition;
     if (!measurements->empty()) c->measurements = *measurements;
@@ -57,8 +65,11 @@ void register_colour_commands(CLI::App& app) {
       std::fprintf(stderr, "printctl calibrate: %s\n", r.error().what().c_str());
       throw CLI::RuntimeError(1);
     }
-    std::printf("patches=%d\nchart_area_m2=%.4f\nseconds=%.1f\nfit_de00_mean=%.3f\nfit_de00_max=%.3f\nprofile=%s\n",
-                r->patches, r->chart_area_m2, r->seconds, r->fit_mean_de00, r->fit_max_de00, r->profile.c_str());
+    std::printf(
+        "patches=%d\nchart_area_m2=%.4f\nseconds=%.1f\nfit_de00_mean=%.3f\nfit_de00_max=%.3f\nprofile=%s\n"
+        "ink_charts=%d\nink_limit_percent=%.0f\n",
+        r->patches, r->chart_area_m2, r->seconds, r->fit_mean_de00, r->fit_max_de00, r->profile.c_str(), r->ink_charts,
+        r->ink_limit_percent);
   });
 
   auto sp = std::make_shared<ProofCheckArgs>();

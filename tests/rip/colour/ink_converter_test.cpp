@@ -161,6 +161,43 @@ TEST(InkConverter, LinearisationCurvesShapeEachInk) {
   EXPECT_NEAR(b[1], a[1], 1.5 / 255);
 }
 
+TEST(InkConverter, DeviceInksPrintTheDesignChannelsAsInkAmounts) {
+  InkConverterSettings s;
+  s.device_inks = {"black", "cyan"};  // R drives black, G cyan; magenta and yellow never print
+  s.ink_limit_percent = 150;          // off for device values: a chart must print as asked
+  auto conv = InkConverter::create(s);
+  ASSERT_TRUE(conv) << conv.error().message;
+  for (const Rgba8 c : {Rgba8{0, 0, 0, 255}, Rgba8{255, 128, 7, 255}, Rgba8{51, 204, 255, 255}}) {
+    const auto exact = conv->convert_exact(c);
+    const auto table = table_inks(*conv, c);
+    EXPECT_NEAR(exact[3], 1 - c.r / 255.0, 1e-9);
+    EXPECT_NEAR(exact[0], 1 - c.g / 255.0, 1e-9);
+    EXPECT_EQ(exact[1], 0);
+    EXPECT_EQ(exact[2], 0);
+    for (int k = 0; k < 4; ++k) EXPECT_NEAR(table[k], exact[k], 0.6 / 255) << k;
+  }
+  // The curves still apply: cyan laid at most 80 %.
+  s.linearisation = {ToneCurve{{{0, 0}, {1, 0.8}}}, {}, {}, {}};
+  auto lin = InkConverter::create(s);
+  ASSERT_TRUE(lin);
+  EXPECT_NEAR(lin->convert_exact({255, 0, 255, 255})[0], 0.8, 1e-9);
+}
+
+TEST(InkConverter, DeviceInksErrorsNameTheInk) {
+  InkConverterSettings s;
+  s.device_inks = {"cyan", "orange"};
+  auto a = InkConverter::create(s);
+  ASSERT_FALSE(a);
+  EXPECT_NE(a.error().message.find("'orange' is not one of the printer's inks"), std::string::npos)
+      << a.error().message;
+  s.device_inks = {"cyan", "cyan"};
+  auto b = InkConverter::create(s);
+  ASSERT_FALSE(b);
+  EXPECT_NE(b.error().message.find("'cyan' twice"), std::string::npos) << b.error().message;
+  s.device_inks = {"cyan", "magenta", "yellow", "black"};
+  EXPECT_FALSE(InkConverter::create(s));
+}
+
 TEST(InkConverter, ProfileErrorsNameTheFile) {
   InkConverterSettings missing;
   missing.profile_path = "/nonexistent/printer.icc";
