@@ -192,7 +192,12 @@ Result<XpbdStats> run_xpbd(ClothModel& cloth, const BodySdf& body, const XpbdPar
         if (body.approx_distance_mm(x[i]) > p.body_thickness_mm + 0.4 * body.spacing_mm()) continue;
         const BodySdf::Hit h = body.query(x[i]);
         if (!h.near || h.distance_mm >= p.body_thickness_mm) {
-          if (!h.near && h.distance_mm < 0) x[i] = prev[i];  // deeper than the band: undo the substep
+          // Deeper than the band: the constraints (a stitch partner, neighbours outside) may
+          // draw the vertex out, but no move may take it deeper (the grid's distance must not
+          // fall). Undoing every move held such a vertex where it started for good (the
+          // blouse's left side seam at the hem, 30 mm open at 4,000 vertices).
+          if (!h.near && h.distance_mm < 0 && body.approx_distance_mm(x[i]) < body.approx_distance_mm(prev[i]))
+            x[i] = prev[i];
           continue;
         }
         touching[i] = 1;
