@@ -46,20 +46,25 @@ Result<XpbdSewStats> sew_pieces_xpbd(const PatternMesh& meshes, const std::vecto
   }
   cloth.weld_group.resize(n);
   for (int i = 0; i < n; ++i) cloth.weld_group[i] = find_root(parent, i);
-  // Seam neighbourhoods: each stitched vertex's group and its mesh neighbours' groups.
+  // Seam neighbourhoods: per weld group, the groups of all its members' mesh neighbours (the
+  // sewn vertex's 1-ring on both sides of the seam), given to every stitched member. With each
+  // vertex's own neighbours only, a seam side that started overlapping its partner's piece hit
+  // the partner's second row and stayed open (the blouse's left side seam, 49 mm).
   cloth.seam_near.assign(n, {});
   std::vector<uint8_t> stitched(n, 0);
   for (const auto& s : stitches) stitched[s[0]] = stitched[s[1]] = 1;
   for (int i = 0; i < n; ++i)
-    if (stitched[i]) cloth.seam_near[i].push_back(cloth.weld_group[i]);
+    if (stitched[i]) cloth.seam_near[cloth.weld_group[i]].push_back(cloth.weld_group[i]);
   for (const auto& e : cloth.edges) {
-    if (stitched[e[0]]) cloth.seam_near[e[0]].push_back(cloth.weld_group[e[1]]);
-    if (stitched[e[1]]) cloth.seam_near[e[1]].push_back(cloth.weld_group[e[0]]);
+    if (stitched[e[0]]) cloth.seam_near[cloth.weld_group[e[0]]].push_back(cloth.weld_group[e[1]]);
+    if (stitched[e[1]]) cloth.seam_near[cloth.weld_group[e[1]]].push_back(cloth.weld_group[e[0]]);
   }
   for (auto& list : cloth.seam_near) {
     std::sort(list.begin(), list.end());
     list.erase(std::unique(list.begin(), list.end()), list.end());
   }
+  for (int i = 0; i < n; ++i)
+    if (stitched[i] && cloth.weld_group[i] != i) cloth.seam_near[i] = cloth.seam_near[cloth.weld_group[i]];
 
   XpbdParams xp;
   xp.duration_s = p.duration_s;
