@@ -44,6 +44,22 @@ void project_bend(const BendStencil& s, const std::vector<double>& w, double dt2
   for (int k = 0; k < 4; ++k) x[id[k]] += g[k] * (w[id[k]] * lambda);
 }
 
+// The zones each vertex is in now: its stitch sides whose pair is still further apart than the
+// vertex is from the side (in the pattern).
+void update_seam_zones(ClothModel& cloth) {
+  const int n = static_cast<int>(cloth.x_mm.size());
+  cloth.seam_zone_active.resize(n);
+  for (int i = 0; i < n; ++i) {
+    auto& active = cloth.seam_zone_active[i];
+    active.clear();
+    for (const ClothModel::SeamZone& z : cloth.seam_zones[i]) {
+      const auto& pr = cloth.stitches[z.pair];
+      if (z.distance_mm < norm(cloth.x_mm[pr[0]] - cloth.x_mm[pr[1]])) active.push_back(z.code);
+    }
+    std::sort(active.begin(), active.end());
+  }
+}
+
 }  // namespace
 
 void project_triangle(const RestTriangle& t, const std::vector<double>& w, double limit, double stiffness,
@@ -137,6 +153,7 @@ Result<XpbdStats> run_xpbd(ClothModel& cloth, const BodySdf& body, const XpbdPar
     budget = std::clamp(1.5 * last_move + 0.05, 0.05, p.max_move_mm);
     if (moved_mm + 2 * budget > pad_mm) {
       if (p.on_progress) p.on_progress(static_cast<double>(step) / total);
+      if (!cloth.seam_zones.empty()) update_seam_zones(cloth);
       pairs = find_self_collision_pairs(cloth, x, p.self_thickness_mm + 2 * pad_mm, &pool, &scratch);
       st.self_pairs = static_cast<int>(pairs.point_triangle.size() + pairs.edge_edge.size());
       x_searched = x;
