@@ -12,6 +12,9 @@ Result<Garment> drape_garment(const Garment& sewn, const BodySdf& body, const Dr
                               const CancelToken* cancel) {
   const auto t0 = std::chrono::steady_clock::now();
   if (auto ok = validate_cloth_material(o.material); !ok) return fail(ok.error());
+  if (o.stretch_passes < 1 || o.stretch_passes > 64)
+    return fail(ErrorCode::kInvalidArgument, "drape: stretch_passes must be in [1, 64]");
+  if (!(o.settle_window_s > 0)) return fail(ErrorCode::kInvalidArgument, "drape: settle_window_s must be positive");
   if (!(o.substep_s > 0 && o.substep_s <= 0.01))
     return fail(ErrorCode::kInvalidArgument, "drape: substep_s must be in (0, 0.01]");
   internal::ClothModel cloth = internal::build_cloth_model(sewn, o.material);
@@ -28,6 +31,9 @@ Result<Garment> drape_garment(const Garment& sewn, const BodySdf& body, const Dr
   p.stretch_stiffness = o.material.stretch_stiffness;
   p.friction = o.material.friction;
   p.settle_speed_mm_s = o.settle_speed_mm_s;
+  p.settle_window_s = o.settle_window_s;
+  p.settle_windows = o.settle_windows;
+  p.stretch_passes = o.stretch_passes;
   p.threads = o.threads;
   p.on_progress = o.on_progress;
   auto r = internal::run_xpbd(cloth, body, p, cancel);
@@ -38,6 +44,8 @@ Result<Garment> drape_garment(const Garment& sewn, const BodySdf& body, const Dr
     stats->substeps = r->substeps;
     stats->simulated_s = r->simulated_s;
     stats->max_speed_mm_s = r->max_speed_mm_s;
+    stats->settle_speed_mm_s = r->settle_speed_mm_s;
+    stats->settled = r->settled;
     stats->body_contacts = r->body_contacts;
     stats->self_contacts = r->self_contacts;
     stats->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -19,7 +19,17 @@ struct DrapeOptions {
   double damping_per_s = 4;
   double clearance_mm = 3;           ///< distance kept from the body (as sewing's)
   double self_thickness_mm = 2;      ///< distance kept between layers of the garment
+  /// Stops once the vertices' RMS speed across each of `settle_windows` windows of
+  /// `settle_window_s` in a row is below this (displacement over the window, not the jitter of
+  /// one substep).
   double settle_speed_mm_s = 4;
+  double settle_window_s = 0.05;
+  int settle_windows = 2;
+  /// Strain-limiting passes over every triangle per substep (Gauss-Seidel). Measured on
+  /// simple_top at 4,000 vertices (cotton-poplin): draped strain p95 0.099 with 4 passes, 0.063
+  /// with 8, 0.043 with 16 (the garment's weight hangs from the shoulders and each pass carries
+  /// the correction one triangle further).
+  int stretch_passes = 16;
   int threads = 2;
   /// Progress: the share of `duration_s` simulated, called every few substeps (may be empty).
   std::function<void(double fraction)> on_progress;
@@ -30,6 +40,8 @@ struct DrapeStats {
   int substeps = 0;
   double simulated_s = 0;
   double max_speed_mm_s = 0;
+  double settle_speed_mm_s = 0;  ///< RMS speed over the last settle window
+  bool settled = false;          ///< stopped by the settle test (else at duration_s)
   int body_contacts = 0;
   int self_contacts = 0;
   double seconds = 0;  ///< wall time

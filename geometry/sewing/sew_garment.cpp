@@ -136,9 +136,12 @@ Result<Garment> sew_garment(const Pattern& pattern, const PatternMesh& meshes, c
       cloth.rest_mm.push_back({m.vertices_mm[t[0]], m.vertices_mm[t[1]], m.vertices_mm[t[2]]});
     }
   }
+  std::vector<int> spring_stitch;  // per spring, its stitch
   for (size_t s = 0; s < pattern.stitches.size(); ++s)
-    for (const auto& pr : meshes.stitch_vertices[s])
+    for (const auto& pr : meshes.stitch_vertices[s]) {
       cloth.springs.push_back({pr[0] + offset[pattern.stitches[s].a.piece], pr[1] + offset[pattern.stitches[s].b.piece]});
+      spring_stitch.push_back(static_cast<int>(s));
+    }
 
   internal::ClothParams params;
   params.clearance_mm = options.clearance_mm;
@@ -180,7 +183,7 @@ Result<Garment> sew_garment(const Pattern& pattern, const PatternMesh& meshes, c
     xp.self_thickness_mm = options.xpbd_self_thickness_mm;
     xp.threads = options.threads;
     if (options.on_progress) xp.on_progress = options.on_progress;
-    auto r = internal::sew_pieces_xpbd(meshes, offset, cloth.springs, body, xp, cloth.x_mm, cancel);
+    auto r = internal::sew_pieces_xpbd(meshes, offset, cloth.springs, spring_stitch, body, xp, cloth.x_mm, cancel);
     if (!r) return fail(r.error().with_context("pattern '" + pattern.name + "': sewing"));
     st.sewing_iterations = r->substeps;
   } else {

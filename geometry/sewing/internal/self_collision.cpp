@@ -128,6 +128,15 @@ SelfCollisionPairs find_self_collision_pairs(const ClothModel& cloth, const std:
     return (!nv.empty() && std::binary_search(nv.begin(), nv.end(), group(u))) ||
            (!nu.empty() && std::binary_search(nu.begin(), nu.end(), group(v)));
   };
+  // Vertices v and u lie in the zones of the two sides of one open stitch.
+  auto opposite_zones = [&](int v, int u) {
+    if (cloth.seam_zone_active.empty()) return false;
+    const auto& zu = cloth.seam_zone_active[u];
+    if (zu.empty()) return false;
+    for (int c : cloth.seam_zone_active[v])
+      if (std::binary_search(zu.begin(), zu.end(), c ^ 1)) return true;
+    return false;
+  };
   const double cell = std::max(cloth.mean_edge_mm, 2 * margin_mm);
   const Vec3 pad{margin_mm, margin_mm, margin_mm};
 
@@ -160,6 +169,7 @@ SelfCollisionPairs find_self_collision_pairs(const ClothModel& cloth, const std:
         const int gv = group(v);
         if (gv == group(t.v[0]) || gv == group(t.v[1]) || gv == group(t.v[2])) continue;
         if (seam_near(v, t.v[0]) || seam_near(v, t.v[1]) || seam_near(v, t.v[2])) continue;
+        if (opposite_zones(v, t.v[0]) || opposite_zones(v, t.v[1]) || opposite_zones(v, t.v[2])) continue;
         const Vec3 q0 = x[v];
         if (q0.x < plo.x || q0.y < plo.y || q0.z < plo.z || q0.x > phi.x || q0.y > phi.y || q0.z > phi.z) continue;
         const auto w = closest_on_triangle(x[v], a, b, c);
@@ -211,6 +221,9 @@ SelfCollisionPairs find_self_collision_pairs(const ClothModel& cloth, const std:
         const int a0 = group(ea[0]), a1 = group(ea[1]), b0 = group(eb[0]), b1 = group(eb[1]);
         if (a0 == b0 || a0 == b1 || a1 == b0 || a1 == b1) continue;
         if (seam_near(ea[0], eb[0]) || seam_near(ea[0], eb[1]) || seam_near(ea[1], eb[0]) || seam_near(ea[1], eb[1]))
+          continue;
+        if (opposite_zones(ea[0], eb[0]) || opposite_zones(ea[0], eb[1]) || opposite_zones(ea[1], eb[0]) ||
+            opposite_zones(ea[1], eb[1]))
           continue;
         const auto st = closest_on_segments(x[ea[0]], x[ea[1]], x[eb[0]], x[eb[1]]);
         const Vec3 pa = x[ea[0]] * (1 - st[0]) + x[ea[1]] * st[0], pb = x[eb[0]] * (1 - st[1]) + x[eb[1]] * st[1];

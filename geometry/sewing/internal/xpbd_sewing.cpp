@@ -21,8 +21,9 @@ int find_root(std::vector<int>& parent, int i) {
 }  // namespace
 
 Result<XpbdSewStats> sew_pieces_xpbd(const PatternMesh& meshes, const std::vector<int>& offset,
-                                     const std::vector<std::array<int, 2>>& stitches, const BodySdf& body,
-                                     const XpbdSewParams& p, std::vector<Vec3>& x_mm, const CancelToken* cancel) {
+                                     const std::vector<std::array<int, 2>>& stitches,
+                                     const std::vector<int>& pair_stitch, const BodySdf& body, const XpbdSewParams& p,
+                                     std::vector<Vec3>& x_mm, const CancelToken* cancel) {
   // The pieces as a garment whose seams are still open: each piece its own vertices.
   Garment open;
   open.vertices_mm = x_mm;
@@ -46,19 +47,54 @@ Result<XpbdSewStats> sew_pieces_xpbd(const PatternMesh& meshes, const std::vecto
   }
   cloth.weld_group.resize(n);
   for (int i = 0; i < n; ++i) cloth.weld_group[i] = find_root(parent, i);
-  // Seam neighbourhoods: each stitched vertex's group and its mesh neighbours' groups.
+  // Seam neighbourhoods: per weld group, the groups of all its members' mesh neighbours (the
+  // sewn vertex's 1-ring on both sides of the seam), given to every stitched member. With each
+  // vertex's own neighbours only, a seam side that started overlapping its partner's piece hit
+  // the partner's second row and stayed open (the blouse's left side seam, 49 mm).
   cloth.seam_near.assign(n, {});
   std::vector<uint8_t> stitched(n, 0);
   for (const auto& s : stitches) stitched[s[0]] = stitched[s[1]] = 1;
   for (int i = 0; i < n; ++i)
-    if (stitched[i]) cloth.seam_near[i].push_back(cloth.weld_group[i]);
+    if (stitched[i]) cloth.seam_near[cloth.weld_group[i]].push_back(cloth.weld_group[i]);
   for (const auto& e : cloth.edges) {
-    if (stitched[e[0]]) cloth.seam_near[e[0]].push_back(cloth.weld_group[e[1]]);
-    if (stitched[e[1]]) cloth.seam_near[e[1]].push_back(cloth.weld_group[e[0]]);
+    if (stitched[e[0]]) cloth.seam_near[cloth.weld_group[e[0]]].push_back(cloth.weld_group[e[1]]);
+    if (stitched[e[1]]) cloth.seam_near[cloth.weld_group[e[1]]].push_back(cloth.weld_group[e[0]]);
   }
   for (auto& list : cloth.seam_near) {
     std::sort(list.begin(), list.end());
     list.erase(std::unique(list.begin(), list.end()), list.end());
+  }
+  for (int i = 0; i < n; ++i)
+    if (stitched[i] && cloth.weld_group[i] != i) cloth.seam_near[i] = cloth.seam_near[cloth.weld_group[i]];
+  // Seam zones: every vertex of a stitch side's piece closer (2D) to the side's nearest stitched
+  // vertex than that pair starts apart.
+  if (pair_stitch.size() == stitches.size()) {
+    cloth.seam_zones.assign(n, {});
+    std::vector<std::vector<int>> stitch_pairs;
+    for (size_t k = 0; k < stitches.size(); ++k) {
+      if (pair_stitch[k] >= static_cast<int>(stitch_pairs.size())) stitch_pairs.resize(pair_stitch[k] + 1);
+      stitch_pairs[pair_stitch[k]].push_back(static_cast<int>(k));
+    }
+    auto chart = [&](int v) {
+      const int pc = cloth.vertex_piece[v];
+      return meshes.pieces[pc].vertices_mm[v - offset[pc]];
+    };
+    for (size_t s = 0; s < stitch_pairs.size(); ++s) {
+      if (stitch_pairs[s].empty()) continue;
+      for (int side = 0; side < 2; ++side) {
+        const int pc = cloth.vertex_piece[stitches[stitch_pairs[s][0]][side]];
+        for (int u = offset[pc]; u < offset[pc + 1]; ++u) {
+          int best = -1;
+          double best_d = 1e300;
+          for (int k : stitch_pairs[s]) {
+            const double d = norm(chart(u) - chart(stitches[k][side]));
+            if (d < best_d) best_d = d, best = k;
+          }
+          const double start_gap = norm(x_mm[stitches[best][0]] - x_mm[stitches[best][1]]);
+          if (best_d < start_gap) cloth.seam_zones[u].push_back({best, static_cast<int>(2 * s) + side, best_d});
+        }
+      }
+    }
   }
 
   XpbdParams xp;

@@ -38,10 +38,14 @@ struct XpbdSewStats {
 /// Sews the pieces of `meshes` (vertex v of piece p is x_mm[offset[p] + v], the placed start
 /// positions, updated in place) with the stitched pairs `stitches` (global numbering): gravity
 /// off, the pairs' allowed distance shrinking at `close_mm_s`, self-collision and body contact
-/// active from the first substep. Stops when every pair is within `done_gap_mm` or at the time
-/// limit (the caller measures the gaps). Fails with kSewing if the solver diverges, kCancelled.
+/// active from the first substep. `pair_stitch` gives each pair's stitch: the cloth near the two
+/// sides of one stitch, closer to them (in the pattern) than the pair is still open, does not
+/// collide with each other, so sides that start overlapping can pass each other. Stops when every pair is within
+/// `done_gap_mm` or at the time limit (the caller measures the gaps). Fails with kSewing if the solver diverges,
+/// kCancelled.
 [[nodiscard]] Result<XpbdSewStats> sew_pieces_xpbd(const PatternMesh& meshes, const std::vector<int>& offset,
-                                                   const std::vector<std::array<int, 2>>& stitches, const BodySdf& body,
+                                                   const std::vector<std::array<int, 2>>& stitches,
+                                                   const std::vector<int>& pair_stitch, const BodySdf& body,
                                                    const XpbdSewParams& p, std::vector<Vec3>& x_mm,
                                                    const CancelToken* cancel);
 

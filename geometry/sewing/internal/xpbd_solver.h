@@ -29,7 +29,12 @@ struct XpbdParams {
   double stretch_limit = 0.03;
   double stretch_stiffness = 1.0;
   double friction = 0.4;
-  double settle_speed_mm_s = 4;      ///< stop early once 99.5 % of the vertices are slower (after 0.3 s)
+  /// Draping stops early once settled: the vertices' RMS speed over each window of
+  /// `settle_window_s` (their displacement across it, so jitter in place does not count) stays
+  /// below `settle_speed_mm_s` for `settle_windows` windows in a row.
+  double settle_speed_mm_s = 4;
+  double settle_window_s = 0.05;
+  int settle_windows = 2;
   /// Sewing (cloth.stitches not empty): each stitched pair may be no further apart than its
   /// distance at the start minus this speed x time, so the seams close gradually (0: at once).
   double stitch_close_mm_s = 100;
@@ -48,6 +53,8 @@ struct XpbdStats {
   int substeps = 0;
   double simulated_s = 0;
   double max_speed_mm_s = 0;    ///< at the end
+  double settle_speed_mm_s = 0;  ///< draping: the RMS speed over the last settle window
+  bool settled = false;          ///< draping: stopped by the settle test, not the time limit
   int body_contacts = 0;        ///< vertices touching the body in the last substep
   int self_contacts = 0;        ///< pairs held apart in the last substep
   int self_pairs = 0;           ///< candidate pairs of the last broad phase

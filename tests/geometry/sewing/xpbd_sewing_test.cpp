@@ -87,6 +87,26 @@ TEST(XpbdSewing, TubeClosesRoundACylinderUntangled) {
   }
 }
 
+TEST(XpbdSewing, PanelStartedDeepInsideTheBodyComesOut) {
+  // The front panel placed 35 mm closer to the axis: its middle starts 20 mm inside the
+  // cylinder, deeper than the body's exact band (18 mm). Those vertices used to be held where
+  // they started (every move undone), so the tube ended with 48 of them inside.
+  BodySdf body = cylinder_body(100, 0, 600);
+  ASSERT_LT(body.band_mm(), 20);
+  Pattern p = tube_pattern();
+  p.pieces[0].placement->translation_mm.z = 80;
+  SewStats st;
+  auto g = sew_garment(p, body, xpbd_options(), &st);
+  ASSERT_TRUE(g) << g.error().what();
+  double gap = 0;
+  for (const auto& s : st.stitch_gap_mm)
+    for (double d : s) gap = std::max(gap, d);
+  EXPECT_LT(gap, 1.0);
+  DistortionReport r = measure_distortion(p, *g, &body);
+  EXPECT_EQ(r.inside_body, 0);
+  EXPECT_EQ(cgal_self_intersections(*g), 0);
+}
+
 TEST(XpbdSewing, SameInputSameGarmentToTheBitForAnyThreadCount) {
   BodySdf body = cylinder_body(100, 0, 600);
   Pattern p = tube_pattern();
