@@ -3,7 +3,9 @@
 #include "geometry/design/make_piece_renderer.h"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
+#include <list>
 #include <mutex>
 #include <optional>
 
@@ -17,6 +19,7 @@
 #include "geometry/design/internal/keep_printing_triangles.h"
 #include "geometry/design/internal/piece_marks.h"
 #include "geometry/design/internal/render_builder.h"
+#include "geometry/design/raster/mip_cache.h"
 #include "geometry/design/raster/mip_image.h"
 #include "geometry/design/raster/render_window.h"
 #include "geometry/design/validate_design.h"
@@ -27,7 +30,8 @@ using namespace internal;
 
 /// What every design on one garment shares: the surface, the allowance sources, each piece's cut
 /// outline, allowance band triangles and printed marks, and (once a stroke asks) the garment's
-/// closest-point index. Read-only once built, except the index made on first use.
+/// closest-point index. Read-only once built, except the index made on first use and the few
+/// planar occlusion maps it keeps for the next design.
 struct RendererBase {
   struct Piece {
     Polygon cut;
@@ -41,6 +45,9 @@ struct RendererBase {
   std::unique_ptr<GarmentSurface> surface;
   std::unique_ptr<AllowanceSource> allowance;
   std::vector<Piece> pieces;
+  /// The image pyramids of the last designs' layers (the same image object, still alive).
+  mutable MipCache mips;
+  MipCache* kept_mips() const { return options.keep_layer_data ? &mips : nullptr; }
 
   const ClosestPointIndex& garment_index() const {
     std::call_once(index_once_, [this] {
@@ -49,9 +56,44 @@ struct RendererBase {
     return *index_;
   }
 
+  /// The occlusion map of a planar layer: it depends only on where the image plane is (centre,
+  /// normal, up), the occlusion tolerance and the cell, not on the image or its size, so a
+  /// design that changes anything else reuses the last ones made on this base.
+  std::shared_ptr<const DepthMap> depth_map(const PlanarProjection& p, const PlanarField& field) const {
+    if (!options.keep_layer_data)
+      return std::make_shared<const DepthMap>(field, *surface, p.occlusion_tolerance_mm, options.occlusion_cell_mm);
+    const std::array<double, 11> key{p.centre_mm.x,
+                                     p.centre_mm.y,
+                                     p.centre_mm.z,
+                                     p.normal.x,
+                                     p.normal.y,
+                                     p.normal.z,
+                                     p.up.x,
+                                     p.up.y,
+                                     p.up.z,
+                                     p.occlusion_tolerance_mm,
+                                     options.occlusion_cell_mm};
+    {
+      std::lock_guard lock(depth_mu_);
+      for (auto it = depth_maps_.begin(); it != depth_maps_.end(); ++it)
+        if (it->first == key) {
+          depth_maps_.splice(depth_maps_.begin(), depth_maps_, it);
+          return depth_maps_.front().second;
+        }
+    }
+    auto map = std::make_shared<const DepthMap>(field, *surface, p.occlusion_tolerance_mm, options.occlusion_cell_mm);
+    std::lock_guard lock(depth_mu_);
+    depth_maps_.emplace_front(key, map);
+    if (depth_maps_.size() > kKeptDepthMaps) depth_maps_.pop_back();
+    return map;
+  }
+
  private:
+  static constexpr std::size_t kKeptDepthMaps = 2;
   mutable std::once_flag index_once_;
   mutable std::unique_ptr<ClosestPointIndex> index_;
+  mutable std::mutex depth_mu_;
+  mutable std::list<std::pair<std::array<double, 11>, std::shared_ptr<const DepthMap>>> depth_maps_;
 };
 
 namespace {
@@ -83,18 +125,18 @@ std::vector<LayerRuntime> make_layers(const Design& design, const RendererBase& 
     LayerRuntime L;
     L.opacity = dl.opacity;
     if (const auto* c = std::get_if<CylindricalProjection>(&dl.content)) {
-      L.texture = make_cylindrical_field(*c, surface, tolerance_mm);
+      L.texture = make_cylindrical_field(*c, surface, tolerance_mm, base.kept_mips());
     } else if (const auto* p = std::get_if<PlanarProjection>(&dl.content)) {
-      auto field = std::make_unique<PlanarField>(*p, tolerance_mm);
+      auto field = std::make_unique<PlanarField>(*p, tolerance_mm, base.kept_mips());
       L.planar = field.get();
-      L.depth = std::make_unique<DepthMap>(*field, surface, p->occlusion_tolerance_mm, base.options.occlusion_cell_mm);
+      L.depth = base.depth_map(*p, *field);
       L.texture = std::move(field);
     } else if (const auto* b = std::get_if<BrushStroke>(&dl.content)) {
       L.kind = LayerRuntime::Kind::kStroke;
       L.stroke = std::make_unique<StrokeField>(*b, surface, base.garment_index());
       L.colour = premultiply(b->colour);
     } else if (const auto* t = std::get_if<TextureTransfer>(&dl.content)) {
-      L.texture = make_transfer_field(*t, tolerance_mm);
+      L.texture = make_transfer_field(*t, tolerance_mm, base.kept_mips());
     }
     out.push_back(std::move(L));
   }
@@ -131,9 +173,10 @@ Result<std::shared_ptr<const RendererBase>> prepare_piece_renderer(const Pattern
                                                                    const RenderOptions& options,
                                                                    const CancelToken* cancel) {
   if (auto st = validate_finishing(pattern, finishing); !st) return std::unexpected(st.error());
-  if (!(options.tolerance_mm > 0) || !(options.min_triangle_mm > 0) || !(options.occlusion_cell_mm > 0))
+  if (!(options.tolerance_mm > 0) || !(options.min_triangle_mm > 0) || !(options.occlusion_cell_mm > 0) ||
+      !(options.weight_tolerance > 0))
     return fail(ErrorCode::kInvalidArgument,
-                "render options: tolerance_mm, min_triangle_mm and occlusion_cell_mm must be > 0");
+                "render options: tolerance_mm, min_triangle_mm, occlusion_cell_mm and weight_tolerance must be > 0");
   auto base = std::make_shared<RendererBase>();
   base->options = options;
   base->blank_band = !finishing.textured_allowance;
@@ -204,6 +247,7 @@ Result<std::unique_ptr<PieceRenderer>> make_piece_renderer(const std::shared_ptr
   ctx.layers = &r->layers_;
   ctx.tolerance_mm = base->options.tolerance_mm;
   ctx.min_edge_mm = base->options.min_triangle_mm;
+  ctx.weight_tolerance = base->options.weight_tolerance;
   ctx.blank_band = base->blank_band;
 
   // Each piece's chart and band triangles in runs, the runs spread over the threads and joined

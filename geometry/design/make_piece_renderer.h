@@ -25,6 +25,14 @@ struct RenderOptions {
   int max_anisotropy = 8;
   /// Finest cell of a planar layer's occlusion map (print: 0.5 mm; a preview can use its pixel).
   double occlusion_cell_mm = 0.5;
+  /// Largest interpolation error of a layer's weight (0..1) inside a render triangle: half an
+  /// 8-bit step for print. A planar layer's weight fades with the surface's angle, which is not
+  /// affine in a triangle, so this splits the sides of the garment; a preview can use its own.
+  double weight_tolerance = 1.0 / 512;
+  /// The base keeps the last designs' planar occlusion maps and image pyramids for the next
+  /// design made on it (the studio: one change after another). The pixels are the same either
+  /// way; off, a base holds no design's data.
+  bool keep_layer_data = false;
   /// Threads used while building (the render calls themselves are single-threaded and reentrant).
   int build_threads = 2;
 };
@@ -66,7 +74,8 @@ struct RendererBase;
 /// Fails (naming the piece, layer or field) when the garment does not match the pattern, the
 /// design or finishing settings are invalid, a cut outline cannot be built, or `cancel` fires.
 [[nodiscard]] Result<std::unique_ptr<PieceRenderer>> make_piece_renderer(const Pattern& pattern, const Garment& garment,
-                                                                         const Design& design, const Finishing& finishing,
+                                                                         const Design& design,
+                                                                         const Finishing& finishing,
                                                                          const RenderOptions& options = {},
                                                                          const CancelToken* cancel = nullptr);
 

@@ -7,8 +7,8 @@
 #include <fstream>
 #include <numeric>
 
-#include "geometry/garment/garment_obj.h"
 #include "geometry/design/render_piece_image.h"
+#include "geometry/garment/garment_obj.h"
 #include "geometry/preview/render_preview.h"
 #include "host/common/atomic_file.h"
 #include "host/pipeline/internal/output_files.h"
@@ -180,15 +180,17 @@ Result<TexturedGarmentFiles> write_textured_garment(const std::filesystem::path&
   tex.piece_mm_to_atlas_px.resize(pattern.pieces.size());
   for (const Island& is : islands) {
     const geometry::ImageRgba8& src = is.image.image;
-    for (int r = 0; r < src.height_px; ++r)
-      std::copy_n(&src.at(0, r), src.width_px, &atlas.at(is.x, is.y + r));
+    for (int r = 0; r < src.height_px; ++r) std::copy_n(&src.at(0, r), src.width_px, &atlas.at(is.x, is.y + r));
     if (static_cast<size_t>(is.piece) < tex.piece_mm_to_atlas_px.size())
       tex.piece_mm_to_atlas_px[static_cast<size_t>(is.piece)] =
           geometry::Affine2::translation({static_cast<double>(is.x), static_cast<double>(is.y)})
               .compose(is.image.pixel_to_piece_mm.inverse());
   }
 
-  TexturedGarmentFiles files{stem + ".obj", stem + ".mtl", stem + ".png", used_w, height, dpi};
+  TexturedGarmentFiles files{stem + ".obj", stem + ".mtl", stem + ".png", used_w, height, dpi, {}};
+  for (const Island& is : islands)
+    files.islands.push_back(
+        {is.piece, is.x, is.y, is.image.image.width_px, is.image.image.height_px, is.image.pixel_to_piece_mm});
   if (auto st = internal::write_png_checked(dir / files.texture, atlas, rip::PngChannels::kRgbOverWhite, dpi); !st)
     return fail(st.error());
   if (auto st = write_text_file(dir / files.mtl, geometry::garment_mtl(tex)); !st) return fail(st.error());

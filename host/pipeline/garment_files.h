@@ -33,11 +33,19 @@ namespace tp::host {
                                          const geometry::Pattern& pattern, const geometry::Garment& garment,
                                          const geometry::BodyMesh& body, const std::string& body_stem);
 
+/// Where one piece's image lies in the garment texture.
+struct AtlasIsland {
+  int piece = -1;
+  int x_px = 0, y_px = 0, width_px = 0, height_px = 0;  ///< the piece image's rectangle in the texture
+  geometry::Affine2 pixel_to_piece_mm;                  ///< of the piece image (render_piece_image's)
+};
+
 /// What write_textured_garment wrote.
 struct TexturedGarmentFiles {
   std::string obj, mtl, texture;  ///< file names in the output folder
   int texture_width_px = 0, texture_height_px = 0;
-  double texture_dpi = 0;         ///< resolution of the pieces in the texture
+  double texture_dpi = 0;            ///< resolution of the pieces in the texture
+  std::vector<AtlasIsland> islands;  ///< the layout, so the same texture can be rendered again
 };
 
 /// Largest side of the garment texture, pixels (what real-time viewers load without complaint).
@@ -48,10 +56,9 @@ inline constexpr int kGarmentTextureMaxSidePx = 4096;
 /// shelves into `<stem>.png` (over white fabric, pHYs at that resolution), `<stem>.mtl` naming it
 /// as the diffuse map, and `<stem>.obj` whose texture coordinates point into it (normalised to
 /// [0, 1]; positions in mm, stated in the file). Fails (kIo) naming the file.
-[[nodiscard]] Result<TexturedGarmentFiles> write_textured_garment(const std::filesystem::path& dir, const std::string& stem,
-                                                                  const geometry::Pattern& pattern,
-                                                                  const geometry::Garment& garment,
-                                                                  const geometry::PieceRenderer& renderer, double max_dpi);
+[[nodiscard]] Result<TexturedGarmentFiles> write_textured_garment(
+    const std::filesystem::path& dir, const std::string& stem, const geometry::Pattern& pattern,
+    const geometry::Garment& garment, const geometry::PieceRenderer& renderer, double max_dpi);
 
 /// Writes `<prefix>front.png`, `<prefix>side.png` and `<prefix>back.png`: the garment on `body`
 /// (when given) wearing its print, each piece's print (rendered at `dpi`, over white fabric)

@@ -47,6 +47,12 @@ enum class PngChannels {
 [[nodiscard]] Status write_png(const std::filesystem::path& path, const geometry::ImageRgba8& image,
                                PngChannels channels = PngChannels::kRgba, double dpi = 0);
 
+/// The PNG write_png would write, in memory, at zlib `compression_level` (0..9; write_png uses
+/// OIIO's default, 6): a live preview spends less time packing what it sends at once. Fails
+/// (kIo) naming `name` when the encoder refuses, (kInvalidArgument) like write_png.
+[[nodiscard]] Result<std::string> encode_png(const geometry::ImageRgba8& image, PngChannels channels, double dpi,
+                                             int compression_level, const std::string& name = "image.png");
+
 /// Writes a baseline 8-bit sRGB JPEG at `quality` (1..100), composited over white fabric.
 /// Fails (kIo) naming the file, (kInvalidArgument) like write_png.
 [[nodiscard]] Status write_jpeg(const std::filesystem::path& path, const geometry::ImageRgba8& image, int quality = 90);
@@ -63,11 +69,10 @@ struct ChannelImage8 {
 enum class TiffCompression { kNone, kPackBits, kDeflate };
 
 /// Writes a multi-channel separated TIFF (one sample per channel, no alpha, a sample is the amount
-/// of that channel; InkSet and InkNames as TiffBandWriter writes them). `bits_per_sample` is 8, or 1, 2 or 4 for screened data, in which case
-/// the samples hold values 0 .. 2^bits - 1. Fails (kIo) naming the file, (kInvalidArgument) on
-/// inconsistent sizes or an unsupported bit depth.
-[[nodiscard]] Status write_tiff(const std::filesystem::path& path, const ChannelImage8& image,
-                                int bits_per_sample = 8,
+/// of that channel; InkSet and InkNames as TiffBandWriter writes them). `bits_per_sample` is 8, or 1, 2 or 4 for
+/// screened data, in which case the samples hold values 0 .. 2^bits - 1. Fails (kIo) naming the file,
+/// (kInvalidArgument) on inconsistent sizes or an unsupported bit depth.
+[[nodiscard]] Status write_tiff(const std::filesystem::path& path, const ChannelImage8& image, int bits_per_sample = 8,
                                 TiffCompression compression = TiffCompression::kDeflate);
 
 /// Reads every channel of any image as 8-bit interleaved samples (for tests and tools that check

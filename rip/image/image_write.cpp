@@ -79,13 +79,51 @@ std::vector<std::uint8_t> over_white(const geometry::ImageRgba8& image) {
 Status check_size(const std::filesystem::path& path, const geometry::ImageRgba8& image) {
   const size_t n = static_cast<size_t>(std::max(image.width_px, 0)) * std::max(image.height_px, 0);
   if (image.width_px <= 0 || image.height_px <= 0 || image.pixels.size() != n)
-    return fail(ErrorCode::kInvalidArgument,
-                fmt::format("{}: image is {}x{} but holds {} pixels", path.string(), image.width_px,
-                            image.height_px, image.pixels.size()));
+    return fail(ErrorCode::kInvalidArgument, fmt::format("{}: image is {}x{} but holds {} pixels", path.string(),
+                                                         image.width_px, image.height_px, image.pixels.size()));
   return {};
 }
 
+// The PNG spec write_png writes (pHYs from dpi, straight alpha kept for RGBA).
+OIIO::ImageSpec png_spec(const geometry::ImageRgba8& image, int nch, double dpi) {
+  OIIO::ImageSpec spec(image.width_px, image.height_px, nch, OIIO::TypeDesc::UINT8);
+  spec.attribute("oiio:ColorSpace", "sRGB");
+  // pHYs: OIIO converts inches to the chunk's pixels per metre; without a unit, only the aspect.
+  const float res = dpi > 0 ? static_cast<float>(dpi) : 1.0f;
+  spec.attribute("XResolution", res);
+  spec.attribute("YResolution", res);
+  if (dpi > 0) spec.attribute("ResolutionUnit", "inch");
+  // Our pixels carry straight alpha; without this OIIO would un-premultiply them once more.
+  if (nch == 4) spec.attribute("oiio:UnassociatedAlpha", 1);
+  return spec;
+}
+
 }  // namespace
+
+Result<std::string> encode_png(const geometry::ImageRgba8& image, PngChannels channels, double dpi,
+                               int compression_level, const std::string& name) {
+  if (auto ok = check_size(name, image); !ok) return fail(ok.error());
+  const int nch = channels == PngChannels::kRgba ? 4 : 3;
+  OIIO::ImageSpec spec = png_spec(image, nch, dpi);
+  spec.attribute("png:compressionLevel", std::clamp(compression_level, 0, 9));
+  std::vector<std::uint8_t> rgb;
+  if (nch == 3) rgb = over_white(image);
+  const std::uint8_t* data = nch == 4 ? reinterpret_cast<const std::uint8_t*>(image.pixels.data()) : rgb.data();
+  auto out = OIIO::ImageOutput::create("png");
+  if (!out || !out->supports("ioproxy"))
+    return fail(ErrorCode::kIo, fmt::format("{}: no in-memory PNG writer: {}", name, OIIO::geterror()));
+  std::vector<unsigned char> bytes;
+  OIIO::Filesystem::IOVecOutput vec(bytes);
+  out->set_ioproxy(&vec);
+  if (!out->open(name, spec)) return fail(ErrorCode::kIo, fmt::format("{}: cannot encode: {}", name, out->geterror()));
+  if (!out->write_image(OIIO::TypeDesc::UINT8, data)) {
+    std::string why = out->geterror();
+    out->close();
+    return fail(ErrorCode::kIo, fmt::format("{}: cannot encode image: {}", name, why));
+  }
+  if (!out->close()) return fail(ErrorCode::kIo, fmt::format("{}: cannot finish image: {}", name, out->geterror()));
+  return std::string(bytes.begin(), bytes.end());
+}
 
 Status write_jpeg(const std::filesystem::path& path, const geometry::ImageRgba8& image, int quality) {
   if (auto ok = check_size(path, image); !ok) return ok;
@@ -116,12 +154,14 @@ Status write_png(const std::filesystem::path& path, const geometry::ImageRgba8& 
 
 Status write_tiff(const std::filesystem::path& path, const ChannelImage8& image, int bits_per_sample,
                   TiffCompression compression) {
-  const size_t n = static_cast<size_t>(std::max(image.width_px, 0)) * std::max(image.height_px, 0) * image.channel_names.size();
+  const size_t n =
+      static_cast<size_t>(std::max(image.width_px, 0)) * std::max(image.height_px, 0) * image.channel_names.size();
   if (image.samples.size() != n)
-    return fail(ErrorCode::kInvalidArgument, fmt::format("{}: {}x{}x{} image holds {} samples", path.string(),
-                                                         image.width_px, image.height_px,
-                                                         image.channel_names.size(), image.samples.size()));
-  auto w = TiffBandWriter::open(path, image.width_px, image.height_px, image.channel_names, bits_per_sample, compression);
+    return fail(ErrorCode::kInvalidArgument,
+                fmt::format("{}: {}x{}x{} image holds {} samples", path.string(), image.width_px, image.height_px,
+                            image.channel_names.size(), image.samples.size()));
+  auto w =
+      TiffBandWriter::open(path, image.width_px, image.height_px, image.channel_names, bits_per_sample, compression);
   if (!w) return std::unexpected(w.error());
   const auto stride = static_cast<std::ptrdiff_t>(image.width_px * image.channel_names.size());
   if (auto s = (*w)->write_rows(image.height_px, image.samples.data(), stride); !s) return s;
@@ -137,13 +177,13 @@ Result<ChannelImage8> read_channels8(const std::filesystem::path& path) {
   const OIIO::ImageSpec& spec = in->spec();
   if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0 ||
       static_cast<std::int64_t>(spec.width) * spec.height * spec.nchannels > kMaxImagePixels * 4)
-    return fail(ErrorCode::kImage, fmt::format("{}: unsupported dimensions {}x{}x{}", name, spec.width,
-                                               spec.height, spec.nchannels));
+    return fail(ErrorCode::kImage,
+                fmt::format("{}: unsupported dimensions {}x{}x{}", name, spec.width, spec.height, spec.nchannels));
   ChannelImage8 img;
   img.width_px = spec.width;
   img.height_px = spec.height;
-  img.channel_names = parse_channel_description(spec.get_string_attribute("ImageDescription"),
-                                                static_cast<size_t>(spec.nchannels));
+  img.channel_names =
+      parse_channel_description(spec.get_string_attribute("ImageDescription"), static_cast<size_t>(spec.nchannels));
   if (img.channel_names.empty()) img.channel_names = spec.channelnames;
   img.samples.resize(static_cast<size_t>(spec.width) * spec.height * spec.nchannels);
   if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::UINT8, img.samples.data()))

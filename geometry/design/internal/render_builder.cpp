@@ -15,8 +15,6 @@
 namespace tp::geometry::internal {
 namespace {
 
-// Weight (0..1) interpolation error budget: half an 8-bit step.
-constexpr double kWeightTolerance = 1.0 / 512;
 // Weights this close to 0 or 1 are treated as exactly 0 or 1.
 constexpr double kWeightSnap = 1e-4;
 
@@ -101,7 +99,8 @@ class Builder {
     m.piece = a.piece;
     m.loc.triangle = a.loc.triangle;
     for (int k = 0; k < 3; ++k)
-      m.loc.bary[static_cast<size_t>(k)] = 0.5 * (a.loc.bary[static_cast<size_t>(k)] + b.loc.bary[static_cast<size_t>(k)]);
+      m.loc.bary[static_cast<size_t>(k)] =
+          0.5 * (a.loc.bary[static_cast<size_t>(k)] + b.loc.bary[static_cast<size_t>(k)]);
     fill(m);
     return m;
   }
@@ -121,7 +120,7 @@ class Builder {
       // Where the layer leaves all three points blank, its coordinates do not matter.
       if (a.f[l].w <= kWeightSnap && b.f[l].w <= kWeightSnap && m.f[l].w <= kWeightSnap) continue;
       const double tol = tf->tolerance_texels * (band ? ctx_.band_tolerance_factor : 1.0);
-      e = std::max({e, du / tol, dv / tol, dw / kWeightTolerance});
+      e = std::max({e, du / tol, dv / tol, dw / ctx_.weight_tolerance});
     }
     if (band) {
       // Strokes and occlusion read the interpolated 3D point.
@@ -135,7 +134,8 @@ class Builder {
     const double longest = std::max({norm(v[1].pos - v[0].pos), norm(v[2].pos - v[1].pos), norm(v[0].pos - v[2].pos)});
     if (depth < ctx_.max_depth && longest > ctx_.min_edge_mm) {
       const Vtx m01 = midpoint(v[0], v[1], -1), m12 = midpoint(v[1], v[2], -1), m20 = midpoint(v[2], v[0], -1);
-      const double e = std::max({error(v[0], v[1], m01, false), error(v[1], v[2], m12, false), error(v[2], v[0], m20, false)});
+      const double e =
+          std::max({error(v[0], v[1], m01, false), error(v[1], v[2], m12, false), error(v[2], v[0], m20, false)});
       if (e > 1) {
         ++stats_.splits;
         refine({v[0], m01, m20}, depth + 1);
@@ -155,7 +155,8 @@ class Builder {
     const double longest = std::max({norm(p[1] - p[0]), norm(p[2] - p[1]), norm(p[0] - p[2])});
     if (depth < ctx_.max_depth && longest > ctx_.band_min_edge_mm) {
       const Vtx m01 = midpoint(v[0], v[1], seg), m12 = midpoint(v[1], v[2], seg), m20 = midpoint(v[2], v[0], seg);
-      const double e = std::max({error(v[0], v[1], m01, true), error(v[1], v[2], m12, true), error(v[2], v[0], m20, true)});
+      const double e =
+          std::max({error(v[0], v[1], m01, true), error(v[1], v[2], m12, true), error(v[2], v[0], m20, true)});
       if (e > 1) {
         ++stats_.splits;
         const Vec2 a = m01.pos, b = m12.pos, c = m20.pos;
@@ -202,7 +203,8 @@ class Builder {
       if (std::min({w0, w1, w2}) >= 1 - kWeightSnap) e.flags |= TriLayer::kUnitWeight;
       if (L.depth) {
         std::array<Vec3, 3> pc;
-        for (int k = 0; k < 3; ++k) pc[static_cast<size_t>(k)] = L.planar->plane_coordinates(v[static_cast<size_t>(k)].sp.position_mm);
+        for (int k = 0; k < 3; ++k)
+          pc[static_cast<size_t>(k)] = L.planar->plane_coordinates(v[static_cast<size_t>(k)].sp.position_mm);
         const auto cov = L.depth->classify(pc);
         if (cov == DepthMap::Coverage::kHidden) continue;
         if (cov == DepthMap::Coverage::kPartial) e.flags |= TriLayer::kDepthTest;
@@ -290,7 +292,8 @@ void build_grid(PieceData& out) {
     int x0, x1, y0, y1;
     cell_range(out.tris[i], x0, x1, y0, y1);
     for (int y = y0; y <= y1; ++y)
-      for (int x = x0; x <= x1; ++x) out.cell_tris[fill[static_cast<size_t>(y * out.nx + x)]++] = static_cast<std::uint32_t>(i);
+      for (int x = x0; x <= x1; ++x)
+        out.cell_tris[fill[static_cast<size_t>(y * out.nx + x)]++] = static_cast<std::uint32_t>(i);
   }
 }
 

@@ -16,15 +16,16 @@ struct BuildContext {
   const GarmentSurface* surface = nullptr;
   const AllowanceSource* allowance = nullptr;
   const std::vector<LayerRuntime>* layers = nullptr;
-  double tolerance_mm = 0.01;   ///< interpolation error budget on the garment surface
-  double min_edge_mm = 0.25;    ///< triangles are not split below this size
+  double tolerance_mm = 0.01;           ///< interpolation error budget on the garment surface
+  double min_edge_mm = 0.25;            ///< triangles are not split below this size
+  double weight_tolerance = 1.0 / 512;  ///< a layer weight's interpolation error budget (0..1)
   /// The allowance band (hidden in the sewn garment) copies its print with this many times the
   /// tolerance and never splits below `band_min_edge_mm`: its mapping bends at mitred corners,
   /// which would otherwise split the band into slivers for no visible gain.
   double band_tolerance_factor = 5;
   double band_min_edge_mm = 1.0;
-  int max_depth = 7;            ///< nor more than this many times
-  bool blank_band = false;      ///< the allowance band is left unprinted
+  int max_depth = 7;        ///< nor more than this many times
+  bool blank_band = false;  ///< the allowance band is left unprinted
 };
 
 /// Statistics of one build, for the log and the benchmark.

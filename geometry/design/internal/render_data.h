@@ -26,17 +26,17 @@ Linear2 fit_linear(const std::array<Vec2, 3>& p, const std::array<double, 3>& f)
 
 /// One render triangle.
 struct RenderTri {
-  std::array<Vec2, 3> p;      ///< piece mm, counter-clockwise
-  Linear2 x3, y3, z3;         ///< 3D surface point (for strokes and occlusion)
+  std::array<Vec2, 3> p;  ///< piece mm, counter-clockwise
+  Linear2 x3, y3, z3;     ///< 3D surface point (for strokes and occlusion)
 };
 
 /// One layer that prints on one triangle (layers that leave a triangle blank have no entry).
 struct TriLayer {
   enum Flags : std::uint8_t { kUnitWeight = 1, kDepthTest = 2 };
-  Linear2 u, v, w;              ///< level-0 texel coordinates and weight (texture layers)
-  std::uint16_t layer = 0;      ///< index into the design's layers
+  Linear2 u, v, w;          ///< level-0 texel coordinates and weight (texture layers)
+  std::uint16_t layer = 0;  ///< index into the design's layers
   std::uint8_t flags = 0;
-  std::uint32_t first = 0;      ///< stroke layers: candidate segments in PieceData::stroke_segments
+  std::uint32_t first = 0;  ///< stroke layers: candidate segments in PieceData::stroke_segments
   std::uint32_t count = 0;
 };
 
@@ -52,9 +52,9 @@ struct PieceData {
   std::vector<std::uint32_t> layer_start;  ///< tris.size() + 1 offsets into `layers`
   std::vector<TriLayer> layers;            ///< per triangle, bottom layer first
   std::vector<std::uint32_t> stroke_segments;
-  Polygon cut_outline;                     ///< coverage outline (seam line + allowance)
+  Polygon cut_outline;  ///< coverage outline (seam line + allowance)
   std::vector<MarkSegment> marks;
-  std::uint32_t mark_colour = 0;           ///< premultiplied
+  std::uint32_t mark_colour = 0;  ///< premultiplied
   // Uniform grid over the triangles' bounds: cell -> triangle ids (CSR).
   Box2 grid_box;
   double cell_mm = 10;
@@ -66,11 +66,11 @@ struct PieceData {
 struct LayerRuntime {
   enum class Kind { kTexture, kStroke } kind = Kind::kTexture;
   double opacity = 1;
-  std::unique_ptr<TextureField> texture;   ///< kTexture
-  const PlanarField* planar = nullptr;     ///< kTexture from a planar projection (owned by `texture`)
-  std::unique_ptr<DepthMap> depth;         ///< planar occlusion
-  std::unique_ptr<StrokeField> stroke;     ///< kStroke
-  std::uint32_t colour = 0;                ///< kStroke: premultiplied brush colour
+  std::unique_ptr<TextureField> texture;  ///< kTexture
+  const PlanarField* planar = nullptr;    ///< kTexture from a planar projection (owned by `texture`)
+  std::shared_ptr<const DepthMap> depth;  ///< planar occlusion (shared by renderers of one base)
+  std::unique_ptr<StrokeField> stroke;    ///< kStroke
+  std::uint32_t colour = 0;               ///< kStroke: premultiplied brush colour
 };
 
 }  // namespace tp::geometry::internal

@@ -15,7 +15,8 @@ double smoothstep(double x) {
 
 class CylindricalField : public TextureField {
  public:
-  CylindricalField(const CylindricalProjection& layer, const GarmentSurface& surface, double tolerance_mm) {
+  CylindricalField(const CylindricalProjection& layer, const GarmentSurface& surface, double tolerance_mm,
+                   MipCache* mips) {
     const Vec3 dir = layer.axis_direction.value_or(Vec3{0, 1, 0});
     cyl_ = fit_cylinder(surface.garment().vertices_mm, dir, layer.axis_origin_mm);
     if (layer.radius_mm > 0) cyl_.radius_mm = layer.radius_mm;
@@ -26,9 +27,8 @@ class CylindricalField : public TextureField {
     e0_ = normalized(front);
     e1_ = cross(axis_, e0_);
     const double circumference = 2 * std::numbers::pi * std::max(cyl_.radius_mm, 1e-6);
-    const int tiles = layer.tile_width_mm > 0
-                          ? std::max(1, static_cast<int>(std::lround(circumference / layer.tile_width_mm)))
-                          : 1;
+    const int tiles =
+        layer.tile_width_mm > 0 ? std::max(1, static_cast<int>(std::lround(circumference / layer.tile_width_mm))) : 1;
     tile_w_mm_ = circumference / tiles;
     W_ = layer.image->width_px;
     H_ = layer.image->height_px;
@@ -37,7 +37,7 @@ class CylindricalField : public TextureField {
     rotation_rad_ = layer.rotation_deg * std::numbers::pi / 180.0;
     offset_ = layer.offset_mm;
     top_ = cyl_.max_height_mm;
-    image = std::make_shared<MipImage>(*layer.image, Wrap::kRepeat, layer.repeat ? Wrap::kRepeat : Wrap::kTransparent);
+    image = mip_of(layer.image, Wrap::kRepeat, layer.repeat ? Wrap::kRepeat : Wrap::kTransparent, mips);
     tolerance_texels = tolerance_mm / (tile_w_mm_ / W_);
   }
 
@@ -61,11 +61,11 @@ class CylindricalField : public TextureField {
 
 class TransferField : public TextureField {
  public:
-  TransferField(const TextureTransfer& layer, double tolerance_mm)
+  TransferField(const TextureTransfer& layer, double tolerance_mm, MipCache* mips)
       : index_(layer.vertices_mm, layer.triangles), layer_(layer) {
     W_ = layer.image->width_px;
     H_ = layer.image->height_px;
-    image = std::make_shared<MipImage>(*layer.image, Wrap::kRepeat, Wrap::kRepeat);
+    image = mip_of(layer.image, Wrap::kRepeat, Wrap::kRepeat, mips);
     // Surface mm per texel from the model's total 3D area over its total texel area.
     double area3 = 0, area_tex = 0;
     for (size_t t = 0; t < layer.triangles.size(); ++t) {
@@ -103,15 +103,15 @@ class TransferField : public TextureField {
 }  // namespace
 
 std::unique_ptr<TextureField> make_cylindrical_field(const CylindricalProjection& layer, const GarmentSurface& surface,
-                                                     double tolerance_mm) {
-  return std::make_unique<CylindricalField>(layer, surface, tolerance_mm);
+                                                     double tolerance_mm, MipCache* mips) {
+  return std::make_unique<CylindricalField>(layer, surface, tolerance_mm, mips);
 }
 
-std::unique_ptr<TextureField> make_transfer_field(const TextureTransfer& layer, double tolerance_mm) {
-  return std::make_unique<TransferField>(layer, tolerance_mm);
+std::unique_ptr<TextureField> make_transfer_field(const TextureTransfer& layer, double tolerance_mm, MipCache* mips) {
+  return std::make_unique<TransferField>(layer, tolerance_mm, mips);
 }
 
-PlanarField::PlanarField(const PlanarProjection& layer, double tolerance_mm) {
+PlanarField::PlanarField(const PlanarProjection& layer, double tolerance_mm, MipCache* mips) {
   centre_ = layer.centre_mm;
   normal_ = normalized(layer.normal);
   up_ = normalized(layer.up - normal_ * dot(layer.up, normal_));
@@ -123,7 +123,7 @@ PlanarField::PlanarField(const PlanarProjection& layer, double tolerance_mm) {
   cos_full_ = std::cos(layer.fade_start_deg * std::numbers::pi / 180.0);
   cos_zero_ = std::cos(layer.fade_end_deg * std::numbers::pi / 180.0);
   const Wrap wrap = layer.repeat ? Wrap::kRepeat : Wrap::kTransparent;
-  image = std::make_shared<MipImage>(*layer.image, wrap, wrap);
+  image = mip_of(layer.image, wrap, wrap, mips);
   tolerance_texels = tolerance_mm / (width_mm_ / W);
 }
 
@@ -143,7 +143,8 @@ Box2 PlanarField::image_box_mm() const {
 FieldSample PlanarField::eval(const SurfacePoint& p) const {
   const Vec3 c = plane_coordinates(p.position_mm);
   const double facing = dot(p.normal, normal_);
-  const double w = cos_full_ > cos_zero_ ? smoothstep((facing - cos_zero_) / (cos_full_ - cos_zero_)) : (facing > 0 ? 1.0 : 0.0);
+  const double w =
+      cos_full_ > cos_zero_ ? smoothstep((facing - cos_zero_) / (cos_full_ - cos_zero_)) : (facing > 0 ? 1.0 : 0.0);
   return {(c.x / width_mm_ + 0.5) * image->width(), (0.5 - c.y / height_mm_) * image->height(), w};
 }
 

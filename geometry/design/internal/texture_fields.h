@@ -10,6 +10,7 @@
 #include "geometry/design/fit_cylinder.h"
 #include "geometry/design/internal/closest_point.h"
 #include "geometry/design/internal/garment_surface.h"
+#include "geometry/design/raster/mip_cache.h"
 #include "geometry/design/raster/mip_image.h"
 
 namespace tp::geometry::internal {
@@ -33,14 +34,16 @@ class TextureField {
   double tolerance_texels = 0.01;
 };
 
+// Each field's image pyramid comes from `mips` when given (kept between designs), else is built.
+
 /// Cylindrical projection around a cylinder (fitted to the garment unless given).
 std::unique_ptr<TextureField> make_cylindrical_field(const CylindricalProjection& layer, const GarmentSurface& surface,
-                                                     double tolerance_mm);
+                                                     double tolerance_mm, MipCache* mips = nullptr);
 
 /// Planar projection: plane coordinates, facing weight; occlusion is the DepthMap's job.
 class PlanarField : public TextureField {
  public:
-  PlanarField(const PlanarProjection& layer, double tolerance_mm);
+  PlanarField(const PlanarProjection& layer, double tolerance_mm, MipCache* mips = nullptr);
   FieldSample eval(const SurfacePoint& p) const override;
   /// Plane coordinates (mm along right, up) and depth (mm towards the image) of a point.
   Vec3 plane_coordinates(Vec3 p) const;
@@ -54,6 +57,7 @@ class PlanarField : public TextureField {
 };
 
 /// Texture transfer from a textured model of the same garment by closest point.
-std::unique_ptr<TextureField> make_transfer_field(const TextureTransfer& layer, double tolerance_mm);
+std::unique_ptr<TextureField> make_transfer_field(const TextureTransfer& layer, double tolerance_mm,
+                                                  MipCache* mips = nullptr);
 
 }  // namespace tp::geometry::internal

@@ -276,12 +276,16 @@ export async function mount(container, context) {
       const ms = performance.now() - since;
       state.pendingSince = null;
       state.applied = seq;
-      state.timings.push({ ms, render_ms: Number(headers.get("X-Render-Ms")), build_ms: Number(headers.get("X-Build-Ms")) });
+      const part = (h) => Number(headers.get(h)) || 0;
+      const t = { ms, parse_ms: part("X-Parse-Ms"), build_ms: part("X-Build-Ms"), render_ms: part("X-Render-Ms"),
+                  encode_ms: part("X-Encode-Ms") };
+      state.timings.push(t);
       viewHost.dataset.applied = String(seq);
-      say(`Preview updated in ${ms.toFixed(0)} ms (daemon ${(Number(headers.get("X-Build-Ms")) + Number(headers.get("X-Render-Ms"))).toFixed(0)} ms).`);
+      say(`Preview updated in ${ms.toFixed(0)} ms (daemon ${(t.parse_ms + t.build_ms + t.render_ms + t.encode_ms).toFixed(0)} ms).`);
     } catch (e) {
       if (e.name === "AbortError") return;
-      if (seq !== state.seq) return;
+      // 409: a newer design superseded this one in the daemon; its own answer follows.
+      if (e.status === 409 || seq !== state.seq) return;
       state.pendingSince = null;
       viewHost.dataset.applied = String(seq);
       say(`Preview refused: ${e.message}`, e.problems);

@@ -232,6 +232,8 @@ void add_studio_routes(HttpServer::Impl& im) {
       return send_problem(res, 400, "", "give a sample and size, or upload a pattern file (multipart part 'pattern')");
     auto g = sew_studio_garment(id, dir, section, PackageLimits{}, geometry::CancelToken{});
     if (!g) return send_failure(res, g.error());
+    // The garment a saved job prints on (finer mesh) starts sewing now, so a save need not wait.
+    start_print_garment(**g, PackageLimits{});
     cleanup.keep = true;
     std::shared_ptr<StudioGarment> shared(std::move(*g));
     spdlog::info("printd: studio garment {} sewn in {:.1f} s ({} vertices)", id, shared->sew_seconds,
@@ -303,9 +305,16 @@ void add_studio_routes(HttpServer::Impl& im) {
                     // The body is job.json's design object, or {"design": {...}}.
                     const json design = body.contains("design") ? body["design"] : body;
                     auto preview = render_studio_preview(*g, design, PackageLimits{}, geometry::CancelToken{});
+                    if (!preview && preview.error().code == ErrorCode::kCancelled) {
+                      // A newer design for this garment came in: the page drops this answer.
+                      res.set_header("X-Preview-Superseded", "1");
+                      return send_json(res, 409, json{{"error", preview.error().message}, {"superseded", true}});
+                    }
                     if (!preview) return send_failure(res, preview.error());
+                    res.set_header("X-Parse-Ms", std::to_string(preview->parse_ms));
                     res.set_header("X-Build-Ms", std::to_string(preview->build_ms));
                     res.set_header("X-Render-Ms", std::to_string(preview->render_ms));
+                    res.set_header("X-Encode-Ms", std::to_string(preview->encode_ms));
                     res.set_header("Cache-Control", "no-store");
                     res.set_content(std::move(preview->png), "image/png");
                   });

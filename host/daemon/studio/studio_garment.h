@@ -3,9 +3,13 @@
 // (uploaded assets, previews), from which previews and job packages are made.
 #pragma once
 
+#include <condition_variable>
+#include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <mutex>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -13,6 +17,7 @@
 #include "host/common/error.h"
 #include "host/job/job.h"
 #include "host/job/package.h"
+#include "host/pipeline/garment_files.h"
 #include "host/pipeline/job_garment.h"
 
 namespace tp::host {
@@ -23,8 +28,25 @@ namespace tp::host {
 inline constexpr double kStudioPreviewDpi = 16;
 inline constexpr const char* kStudioMeshEdge = "25 mm";
 
-/// The renderer's accuracy for previews: a quarter of a preview pixel, not of a print pixel.
+/// zlib level of the preview atlas PNG: sent once and decoded at once, so packed fast, not small.
+inline constexpr int kStudioPreviewPngLevel = 1;
+
+/// The renderer's accuracy for previews: a quarter of a preview pixel, not of a print pixel, and
+/// a layer weight (a planar image fading at the garment's sides) to 8 of 255, not half of one.
 [[nodiscard]] geometry::RenderOptions studio_render_options(double dpi);
+
+/// The garment a saved job prints on, sewn in the background from the moment the studio garment is
+/// chosen (a save with strokes moves their points onto it, and sewing it takes tens of seconds).
+struct PrintGarmentSewing {
+  nlohmann::json section;  ///< the garment section it is sewn from (undraped)
+  geometry::CancelToken cancel;
+  std::mutex mu;
+  std::condition_variable done_cv;
+  bool done = false;
+  bool orphaned = false;  ///< the studio garment is gone: its folder is removed when this ends
+  Result<std::shared_ptr<const JobGarment>> result = fail(ErrorCode::kCancelled, "not sewn yet");
+  double seconds = 0;
+};
 
 /// A sewn studio garment. The session folder is the package root: `assets/` holds the uploads
 /// (pattern, body, images, textured OBJs) that the design's asset paths name.
@@ -39,6 +61,7 @@ struct StudioGarment {
   std::string obj;  ///< the garment mesh, UVs into the preview atlas (0..1), mm
   int atlas_width_px = 0, atlas_height_px = 0;
   double atlas_dpi = 0;
+  std::vector<AtlasIsland> atlas_islands;  ///< the blank atlas's layout, which every preview repeats
   double sew_seconds = 0;
   /// The preview renderer's design-independent part (default finishing, preview options), made
   /// with the blank atlas and reused by every preview so a change rebuilds only the design's part.
@@ -47,9 +70,21 @@ struct StudioGarment {
   /// with strokes, so their points can be moved onto it; null until then.
   std::shared_ptr<const JobGarment> print_sewn;
   nlohmann::json print_sewn_section;
+  /// The background sewing of the print garment (start_print_garment), or null.
+  std::shared_ptr<PrintGarmentSewing> print_sewing;
   std::mutex mu;  ///< one preview or package at a time per garment
 
+  /// Starts a preview: the one running (or waiting) before it is told to stop, as a newer design
+  /// supersedes it. Returns the new preview's token.
+  [[nodiscard]] geometry::CancelToken begin_preview();
+
   ~StudioGarment();
+
+ private:
+  std::mutex preview_mu_;
+  geometry::CancelToken preview_cancel_;  ///< the latest preview's
+
+ public:
   /// The garment's description for the API: id, pieces, mode, timings, URLs.
   [[nodiscard]] nlohmann::json describe() const;
 };
@@ -71,5 +106,16 @@ struct StudioGarment {
                                                                         nlohmann::json garment_section,
                                                                         const PackageLimits& limits,
                                                                         const geometry::CancelToken& cancel);
+
+/// Starts sewing, on a thread of its own at a lower CPU priority (previews come first), the garment
+/// a saved job prints on: `g.print_garment_section`, undraped. Does nothing when that is the
+/// preview's garment, or when two such sewings run already (a save then sews it itself). The job
+/// is parsed here, so call it with g.mu held or before g is shared.
+void start_print_garment(StudioGarment& g, const PackageLimits& limits);
+
+/// The print garment sewn from `section`: the background one (waited for) when it was started
+/// for that section, else null (the caller sews it).
+[[nodiscard]] Result<std::shared_ptr<const JobGarment>> await_print_garment(StudioGarment& g,
+                                                                            const nlohmann::json& section);
 
 }  // namespace tp::host

@@ -59,6 +59,15 @@ Status move_strokes_to_print_garment(StudioGarment& g, const json& print_section
   section["drape"] = false;
   if (section == g.garment_section) return {};
   if (!g.print_sewn || g.print_sewn_section != section) {
+    // Sewn in the background since the garment was chosen, when it was this section.
+    auto ready = await_print_garment(g, section);
+    if (!ready) return fail(ready.error());
+    if (*ready) {
+      g.print_sewn = *ready;
+      g.print_sewn_section = section;
+    }
+  }
+  if (!g.print_sewn || g.print_sewn_section != section) {
     auto job = parse_studio_job(g, studio_manifest(g, {{"garment", section}}, true), limits);
     if (!job) return fail(job.error());
     auto sewn = sew_job_garment(*job, g.dir / "print-garment", geometry::CancelToken{});

@@ -103,8 +103,9 @@ TEST(MakePieceRenderer, HemAllowanceMirrorsThePiecesOwnStrip) {
   f.edge_allowance_mm = 10;
   auto d = planar_quadrants(20);
   // A horizontal gradient makes the mirror visible.
-  std::get<PlanarProjection>(d.layers[0].content).image =
-      make_image(260, 300, [](int x, int) { return Rgba8{static_cast<std::uint8_t>(x), 100, 50, 255}; });
+  std::get<PlanarProjection>(d.layers[0].content).image = make_image(260, 300, [](int x, int) {
+    return Rgba8{static_cast<std::uint8_t>(x), 100, 50, 255};
+  });
   auto r = make_piece_renderer(g.pattern, g.garment, d, f);
   ASSERT_TRUE(r) << r.error().what();
   for (double depth : {1.0, 4.0, 8.0}) {
@@ -143,6 +144,33 @@ TEST(MakePieceRenderer, CylindricalProjectionIsContinuousAcrossEverySeam) {
       EXPECT_NEAR(pa.b, pb.b, 3);
     }
   }
+}
+
+// A kept base reuses the occlusion map and image pyramid of an earlier design (same plane, same
+// image object, another size): the renderer is still the one a fresh build makes, pixel for pixel.
+TEST(MakePieceRenderer, AKeptBaseRendersTheSameAsAFreshBuildAfterOtherDesigns) {
+  auto g = flat_panels(200, 300, /*with_back=*/true);
+  RenderOptions keep;
+  keep.keep_layer_data = true;
+  auto base = prepare_piece_renderer(g.pattern, g.garment, no_allowance(), keep);
+  ASSERT_TRUE(base) << base.error().what();
+  Design a = planar_quadrants(20);
+  auto first = make_piece_renderer(*base, a);
+  ASSERT_TRUE(first) << first.error().what();
+  Design b = a;
+  std::get<PlanarProjection>(b.layers[0].content).width_mm = 140;
+  auto kept = make_piece_renderer(*base, b);
+  auto fresh = make_piece_renderer(g.pattern, g.garment, b, no_allowance());
+  ASSERT_TRUE(kept && fresh);
+  for (int piece = 0; piece < (*fresh)->piece_count(); ++piece) {
+    const PieceImage x = render_piece_image(**kept, piece, 40), y = render_piece_image(**fresh, piece, 40);
+    ASSERT_EQ(x.image.pixels.size(), y.image.pixels.size());
+    std::size_t differ = 0;
+    for (std::size_t i = 0; i < x.image.pixels.size(); ++i) differ += !(x.image.pixels[i] == y.image.pixels[i]);
+    EXPECT_EQ(differ, 0u) << "piece " << piece;
+  }
+  // And the first design's renderer is untouched by the second.
+  EXPECT_EQ(pixel_at(**first, 0, {50, 225}), (Rgba8{200, 30, 30, 255}));
 }
 
 TEST(MakePieceRenderer, RejectsAGarmentThatDoesNotMatchThePattern) {

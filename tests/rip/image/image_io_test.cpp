@@ -197,6 +197,36 @@ TEST(ImageIo, ReadsFromMemory) {
   EXPECT_EQ(back->pixels, img.pixels);
 }
 
+// In memory at any zlib level: the pixels write_png stores (RGBA exactly; RGB over white), and
+// level 1 packs a smooth image less tightly than 9, so the level reaches the encoder.
+TEST(ImageIo, EncodePngInMemoryKeepsThePixelsAtEveryLevel) {
+  auto dir = test::scratch_dir("image_io_encode");
+  const ImageRgba8 img = gradient(120, 80);
+  ASSERT_TRUE(write_png(dir / "rgb.png", img, PngChannels::kRgbOverWhite, 16));
+  auto file = read_image(dir / "rgb.png");
+  ASSERT_TRUE(file);
+  std::size_t fast_bytes = 0, small_bytes = 0;
+  for (int level : {1, 9}) {
+    auto rgba = encode_png(img, PngChannels::kRgba, 0, level);
+    auto rgb = encode_png(img, PngChannels::kRgbOverWhite, 16, level);
+    ASSERT_TRUE(rgba && rgb) << (rgba ? rgb.error().what() : rgba.error().what());
+    auto a =
+        read_image_from_memory(std::span(reinterpret_cast<const std::uint8_t*>(rgba->data()), rgba->size()), "a.png");
+    auto b =
+        read_image_from_memory(std::span(reinterpret_cast<const std::uint8_t*>(rgb->data()), rgb->size()), "b.png");
+    ASSERT_TRUE(a && b);
+    EXPECT_EQ(a->pixels, img.pixels) << "level " << level;
+    EXPECT_EQ(b->pixels, file->pixels) << "level " << level;
+    (level == 1 ? fast_bytes : small_bytes) = rgb->size();
+  }
+  EXPECT_GT(fast_bytes, small_bytes);
+  ImageRgba8 bad = img;
+  bad.pixels.resize(3);
+  auto refused = encode_png(bad, PngChannels::kRgba, 0, 1, "preview of x");
+  ASSERT_FALSE(refused);
+  EXPECT_NE(refused.error().message.find("preview of x"), std::string::npos);
+}
+
 TEST(ImageIo, WritePngRejectsInconsistentImages) {
   auto dir = test::scratch_dir("image_io_badpng");
   ImageRgba8 img;

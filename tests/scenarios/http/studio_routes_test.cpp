@@ -1,14 +1,18 @@
 // tests/scenarios/http/studio_routes_test.cpp: the design studio's routes against a real printd
 // (--printer none): a sample garment sewn and its mesh, previews rendered by the product's renderer
-// (a stroke shows where it was painted), uploads, job packages `printctl validate` accepts, and
-// broken input: bad JSON, a refused design, unknown garments, bad names and a huge body.
+// (a stroke shows where it was painted, a blank one is the garment's atlas), a superseded preview
+// stopped, uploads (an external pattern and body sewn, one failing the garment checks refused), job
+// packages `printctl validate` accepts, and broken input: bad JSON, a refused design, unknown
+// garments, bad names and a huge body.
 #include <gtest/gtest.h>
 #include <httplib.h>
 #include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <csignal>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -177,6 +181,63 @@ TEST_F(StudioRoutes, PreviewShowsAStrokeWhereItWasPainted) {
   EXPECT_EQ(red_pixels(a), 0);
   EXPECT_GT(red_pixels(b), 50) << "the stroke is not in the atlas";
   EXPECT_FALSE(stroke->get_header_value("X-Render-Ms").empty());
+}
+
+// The preview renders every piece straight into the atlas layout the sewn garment's blank atlas
+// was packed in (by the garment files' writer): a blank design gives that atlas back, pixel for pixel.
+TEST_F(StudioRoutes, BlankPreviewIsTheSewnGarmentsAtlasPixelForPixel) {
+  auto c = daemon_->client();
+  auto atlas = c.Get(url("atlas"));
+  auto blank = c.Post(url("preview"), R"({"layers": []})", "application/json");
+  ASSERT_TRUE(atlas && blank);
+  ASSERT_EQ(blank->status, 200) << blank->body;
+  for (const char* h : {"X-Parse-Ms", "X-Build-Ms", "X-Render-Ms", "X-Encode-Ms"})
+    EXPECT_FALSE(blank->get_header_value(h).empty()) << h;
+  const auto a = png_of(atlas->body), b = png_of(blank->body);
+  ASSERT_EQ(a.width_px, b.width_px);
+  ASSERT_EQ(a.height_px, b.height_px);
+  std::size_t differ = 0;
+  for (std::size_t i = 0; i < a.pixels.size(); ++i)
+    differ += a.pixels[i].r != b.pixels[i].r || a.pixels[i].g != b.pixels[i].g || a.pixels[i].b != b.pixels[i].b ||
+              a.pixels[i].a != b.pixels[i].a;
+  EXPECT_EQ(differ, 0u);
+}
+
+// A preview still being made when a newer design for the same garment arrives stops early and is
+// answered 409 "superseded" (the page drops it); the newer one is rendered.
+TEST_F(StudioRoutes, ANewerPreviewSupersedesTheOneStillRunning) {
+  json layers = json::array();
+  for (int k = 0; k < 40; ++k) {
+    json points = json::array();
+    for (int i = 0; i < 100; ++i) points.push_back({-150 + 3 * i, 1000 + 8 * k, 120 + 10 * std::sin(i / 7.0)});
+    layers.push_back(
+        {{"type", "stroke"}, {"points", points}, {"radius", 25}, {"colour", {255, 0, 0, 255}}, {"hardness", 0.5}});
+  }
+  const std::string heavy = json{{"design", {{"layers", layers}}}}.dump();
+  // Alone it is rendered (1.5 s on two idle cores).
+  auto c = daemon_->client();
+  const auto t0 = std::chrono::steady_clock::now();
+  auto alone = c.Post(url("preview"), heavy, "application/json");
+  ASSERT_TRUE(alone);
+  ASSERT_EQ(alone->status, 200) << alone->body;
+  const auto alone_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  int older_status = 0;
+  std::string older_body, older_header;
+  std::thread first([&] {
+    auto r = daemon_->client().Post(url("preview"), heavy, "application/json");
+    if (!r) return;
+    older_status = r->status;
+    older_body = r->body;
+    older_header = r->get_header_value("X-Preview-Superseded");
+  });
+  std::this_thread::sleep_for(std::chrono::milliseconds(static_cast<int>(std::clamp(alone_ms / 3, 300.0, 2000.0))));
+  auto newer = c.Post(url("preview"), R"({"layers": []})", "application/json");
+  first.join();
+  ASSERT_TRUE(newer);
+  EXPECT_EQ(newer->status, 200) << newer->body;
+  ASSERT_EQ(older_status, 409) << older_body.substr(0, 200);
+  EXPECT_EQ(older_header, "1");
+  EXPECT_EQ(json::parse(older_body)["superseded"], true);
 }
 
 // The garment's own mesh, textured with a preview atlas, is a textured model of the same garment:
@@ -349,6 +410,70 @@ TEST_F(StudioRoutes, SewsAnUploadedFreeSewingPatternOnADressFormAndPreviewsIt) {
   const auto v = run_command({(bin_dir() / "printctl").string(), "validate", zip.string()});
   EXPECT_EQ(v.exit_code, 0) << v.output;
   c.Delete("/api/v1/studio/garments/" + g["id"].get<std::string>());
+}
+
+// GarmentCode's hoody_mean uploaded with its average female body (an OBJ in metres): sewn in 3D at
+// the studio's mesh edge, it passes the garment checks; a cylindrical layer previews on its atlas
+// and the design saves as a package printctl validate accepts.
+TEST_F(StudioRoutes, SewsAnUploadedGarmentCodePatternOnItsBodyAndPreviewsIt) {
+  const fs::path data = shared_data_dir() / "garmentcode";
+  const fs::path spec = data / "patterns/hoody_mean_specification.json", body = data / "bodies/mean_female.obj";
+  if (!fs::exists(spec) || !fs::exists(body)) GTEST_SKIP() << data << " is not on this machine";
+  auto c = daemon_->client();
+  const httplib::MultipartFormDataItems items = {{"pattern", slurp(spec), "hoody_mean.json", "application/json"},
+                                                 {"body", slurp(body), "mean_female.obj", "text/plain"},
+                                                 {"body_units", "m", "", ""}};
+  auto r = c.Post("/api/v1/studio/garments", items);
+  ASSERT_TRUE(r);
+  ASSERT_EQ(r->status, 201) << r->body;
+  const json g = json::parse(r->body);
+  EXPECT_EQ(g["mode"], "3d");
+  EXPECT_EQ(g["pieces"].size(), 6u);
+  EXPECT_EQ(g["garment"]["pattern"], "assets/pattern.json");
+  EXPECT_EQ(g["garment"]["body"]["units"], "m");
+  const std::string preview = g["urls"]["preview"].get<std::string>();
+  auto blank = c.Post(preview, R"({"layers": []})", "application/json");
+  const json design = {{"layers",
+                        {{{"type", "cylindrical"},
+                          {"procedural", {{"kind", "stripes"}, {"seed", 1}, {"size_px", 256}}},
+                          {"tile_width", 150}}}}};
+  auto striped = c.Post(preview, json{{"design", design}}.dump(), "application/json");
+  ASSERT_TRUE(blank && striped);
+  ASSERT_EQ(blank->status, 200) << blank->body;
+  ASSERT_EQ(striped->status, 200) << striped->body;
+  const auto a = png_of(blank->body), b = png_of(striped->body);
+  EXPECT_EQ(a.width_px, g["atlas"]["width_px"].get<int>());
+  EXPECT_EQ(stripe_blue_pixels(a), 0);
+  EXPECT_GT(stripe_blue_pixels(b), 500) << "the stripes are not on the uploaded garment's atlas";
+  auto job = c.Post(g["urls"]["job"].get<std::string>(), json{{"name", "studio-hoody"}, {"design", design}}.dump(),
+                    "application/json");
+  ASSERT_TRUE(job);
+  ASSERT_EQ(job->status, 200) << job->body.substr(0, 400);
+  const fs::path zip = daemon_->root() / "studio-hoody.zip";
+  std::ofstream(zip, std::ios::binary) << job->body;
+  const auto v = run_command({(bin_dir() / "printctl").string(), "validate", zip.string()});
+  EXPECT_EQ(v.exit_code, 0) << v.output;
+  c.Delete("/api/v1/studio/garments/" + g["id"].get<std::string>());
+}
+
+// GarmentCode's shirt_mean on the same body tangles at the studio's mesh edge: the upload is
+// refused with a 422 that names the failed garment check, and nothing is kept.
+TEST_F(StudioRoutes, RefusesAnUploadThatFailsTheGarmentChecksNamingTheCheck) {
+  const fs::path data = shared_data_dir() / "garmentcode";
+  const fs::path spec = data / "patterns/shirt_mean_specification.json", body = data / "bodies/mean_female.obj";
+  if (!fs::exists(spec) || !fs::exists(body)) GTEST_SKIP() << data << " is not on this machine";
+  auto c = daemon_->client();
+  auto r = c.Post("/api/v1/studio/garments",
+                  httplib::MultipartFormDataItems{{"pattern", slurp(spec), "shirt_mean.json", "application/json"},
+                                                  {"body", slurp(body), "mean_female.obj", "text/plain"},
+                                                  {"body_units", "m", "", ""}});
+  ASSERT_TRUE(r);
+  ASSERT_EQ(r->status, 422) << r->body.substr(0, 400);
+  const json e = json::parse(r->body);
+  const std::string message = e["problems"][0]["message"].get<std::string>();
+  EXPECT_NE(message.find("garment checks failed"), std::string::npos) << message;
+  EXPECT_NE(message.find("self-intersecting"), std::string::npos) << message;
+  EXPECT_NE(message.find("limit"), std::string::npos) << message;
 }
 
 TEST_F(StudioRoutes, RefusesBrokenInputWithItsPointer) {
