@@ -8,25 +8,53 @@ namespace tp::geometry {
 namespace {
 
 // Passes of the field before giving up on a vertex still too near (each clears what it can).
-constexpr int kMaxPasses = 8;
+constexpr int kMaxPasses = 12;
+// The field's radius never shrinks below this (mm): a few triangles at any mesh the project sews.
+constexpr double kMinRadius_mm = 15;
 // A deep vertex's push aims this much beyond the band plus clearance (mm): the next pass, then
 // near the surface, finds its exact distance.
 constexpr double kDeepExtra_mm = 4;
 // Pushes agree in direction when their sum is this fraction of their lengths' sum (and one push
 // counts along the mean direction when its cosine with it is above this).
 constexpr double kCoherent = 0.7;
+// A deep vertex looks for the surface this far (mm), in steps of this.
+constexpr double kMaxExit_mm = 300;
+constexpr double kExitStep_mm = 4;
 // The first passes may move a piece whole; the rest spread a field.
 constexpr int kWholePasses = 2;
+
+// The shortest way out of the body from `p` (deeper than the SDF's exact band, where it has no
+// normal): rays in 26 directions (the cube's faces, edges and corners), stepped until outside;
+// the unit direction of the shortest and its length (mm). The body's horizontal outward
+// direction from `axis`, at the band's depth, if no ray leaves within kMaxExit_mm.
+Vec3 way_out(const BodySdf& body, Vec3 p, Vec3 axis, double& length_mm) {
+  double best = kMaxExit_mm;
+  Vec3 best_dir{p.x - axis.x, 0, p.z - axis.z};
+  best_dir = norm(best_dir) > 1e-9 ? normalized(best_dir) : Vec3{0, 0, 1};
+  for (int i = -1; i <= 1; ++i)
+    for (int j = -1; j <= 1; ++j)
+      for (int k = -1; k <= 1; ++k) {
+        if (i == 0 && j == 0 && k == 0) continue;
+        const Vec3 d = normalized(Vec3{double(i), double(j), double(k)});
+        for (double t = kExitStep_mm; t < best; t += kExitStep_mm)
+          if (body.approx_distance_mm(p + d * t) > 0) {
+            best = t, best_dir = d;
+            break;
+          }
+      }
+  length_mm = best < kMaxExit_mm ? best : body.band_mm();
+  return best_dir;
+}
 
 // The push vertex `p` wants: to `clearance_mm` outside, along the outward normal.
 Vec3 wanted_push(const BodySdf& body, Vec3 p, double clearance_mm, Vec3 axis) {
   const BodySdf::Hit h = body.query(p);
   if (h.distance_mm >= clearance_mm) return {0, 0, 0};
   if (h.near && norm(h.normal) > 0.5) return h.normal * (clearance_mm - h.distance_mm);
-  // Deeper than the exact band: horizontally away from the body's vertical axis.
-  Vec3 out{p.x - axis.x, 0, p.z - axis.z};
-  out = norm(out) > 1e-9 ? normalized(out) : Vec3{0, 0, 1};
-  return out * (body.band_mm() + clearance_mm + kDeepExtra_mm);
+  // Deeper than the exact band: along the shortest way out.
+  double out_mm = 0;
+  const Vec3 dir = way_out(body, p, axis, out_mm);
+  return dir * (out_mm + clearance_mm + kDeepExtra_mm);
 }
 
 // Weight of a push at flat distance r (mm) for a field of radius R: 1 at 0, smooth to 0 at R.
@@ -114,12 +142,16 @@ void push_out_of_body(std::vector<std::vector<Vec3>>& start_mm, const PatternMes
   // A vertex counts as clear just inside the clearance: the field aims at it exactly.
   const double aim_mm = clearance_mm * 1.05;
   const std::vector<std::vector<Vec3>> placed = start_mm;
+  double field_mm = radius_mm;
   for (int pass = 0; pass < kMaxPasses; ++pass) {
     int pushed = 0;
     for (size_t pi = 0; pi < start_mm.size() && pi < meshes.pieces.size(); ++pi)
       if (start_mm[pi].size() == meshes.pieces[pi].vertices_mm.size())
         pushed +=
-            push_piece(start_mm[pi], meshes.pieces[pi].vertices_mm, body, aim_mm, radius_mm, axis, pass < kWholePasses);
+            push_piece(start_mm[pi], meshes.pieces[pi].vertices_mm, body, aim_mm, field_mm, axis, pass < kWholePasses);
+    // Pushes that cancel over a wide field (all round a sleeve too narrow for the arm) do not
+    // cancel over a narrower one: each further pass halves the field's radius, to a floor.
+    if (pass + 1 >= kWholePasses) field_mm = std::max(kMinRadius_mm, field_mm / 2);
     if (pushed == 0) break;
     st.passes = pass + 1;
   }
