@@ -59,6 +59,16 @@ Result<geometry::ClothMaterial> job_material(const GarmentMaterialSpec& spec) {
   return *m;
 }
 
+// The sewing solver of a job: its `garment.sewing`, or for "auto" XPBD when a piece comes without
+// a 3D placement (FreeSewing, DXF, native without one: pieces placed by role, sewn with contact
+// and self-collision from the start) and ARAP when every piece brings its own.
+std::string sewing_solver(const std::string& asked, const geometry::Pattern& pattern) {
+  if (asked != "auto") return asked;
+  for (const geometry::Piece& p : pattern.pieces)
+    if (!p.placement) return "xpbd";
+  return "arap";
+}
+
 // The garment stage's progress: a solver's own fraction mapped into [from, to] of the stage,
 // passed on only when it has moved by a percent or more (the solvers call once per iteration).
 std::function<void(double)> garment_progress(PipelineState& ps, double from, double to, const char* what) {
@@ -127,7 +137,8 @@ Status stage_garment(PipelineState& ps) {
                    {"reason", al->reason}};
     geometry::SewOptions opt;
     opt.target_edge_mm = ps.job.garment.mesh_edge_mm;
-    opt.solver = ps.job.garment.sewing == "xpbd" ? geometry::SewSolver::kXpbd : geometry::SewSolver::kArap;
+    const std::string solver = sewing_solver(ps.job.garment.sewing, part.pattern);
+    opt.solver = solver == "xpbd" ? geometry::SewSolver::kXpbd : geometry::SewSolver::kArap;
     opt.on_progress = garment_progress(ps, 0.0, ps.job.garment.drape ? 0.5 : 1.0, "sewing");
     auto g = geometry::sew_garment(part.pattern, part.meshes, *ps.body, opt, &stats, &ps.cancel);
     if (!g) return fail(from_geometry(g.error()));
@@ -139,7 +150,8 @@ Status stage_garment(PipelineState& ps) {
     if (!whole) return fail(from_geometry(whole.error()));
     ps.garment = std::move(*whole);
     ps.garment_is_3d = true;
-    ps.report["sewing"] = {{"solver", ps.job.garment.sewing},
+    ps.report["sewing"] = {{"solver", solver},
+                           {"solver_asked", ps.job.garment.sewing},
                            {"sewing_iterations", stats.sewing_iterations},
                            {"relax_iterations", stats.relax_iterations},
                            {"contacts", stats.contacts},
