@@ -3,7 +3,9 @@
 // 3D garment as OBJ and its previews.
 #include <algorithm>
 #include <cmath>
+#include <fstream>
 #include <functional>
+#include <iterator>
 #include <string>
 
 #include "geometry/body/load_body_obj.h"
@@ -13,6 +15,7 @@
 #include "geometry/garment/flat_garment.h"
 #include "geometry/garment/flat_pieces.h"
 #include "geometry/garment/garment_obj.h"
+#include "geometry/pattern/import/load_pattern.h"
 #include "geometry/samples/garments.h"
 #include "geometry/sewing/drape_garment.h"
 #include "geometry/sewing/sew_garment.h"
@@ -59,14 +62,27 @@ Result<geometry::ClothMaterial> job_material(const GarmentMaterialSpec& spec) {
   return *m;
 }
 
+// Whether the job's pattern file is a GarmentCode specification (named or detected).
+bool garmentcode_pattern(const GarmentSpec& g) {
+  if (!g.pattern || g.pattern_format == "garmentcode") return g.pattern.has_value();
+  if (g.pattern_format != "auto") return false;
+  std::ifstream in(*g.pattern, std::ios::binary);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  auto format = geometry::detect_pattern_format(g.pattern->filename().string(), text);
+  return format && *format == geometry::PatternFormat::kGarmentCode;
+}
+
 // The sewing solver of a job: its `garment.sewing`, or for "auto" XPBD when a piece comes without
-// a 3D placement (FreeSewing, DXF, native without one: pieces placed by role, sewn with contact
-// and self-collision from the start) and ARAP when every piece brings its own.
-std::string sewing_solver(const std::string& asked, const geometry::Pattern& pattern) {
-  if (asked != "auto") return asked;
+// a 3D placement (FreeSewing, DXF, native without one: pieces placed by role) or the pattern is
+// GarmentCode's, ARAP otherwise (the samples, native patterns placed for the dress form). XPBD has
+// contact and self-collision from the start; ARAP folds those patterns' slack through itself but
+// sews the samples (XPBD leaves the sample dress's side seam open). docs/garments.md has the
+// figures behind the rule.
+std::string sewing_solver(const GarmentSpec& g, const geometry::Pattern& pattern) {
+  if (g.sewing != "auto") return g.sewing;
   for (const geometry::Piece& p : pattern.pieces)
     if (!p.placement) return "xpbd";
-  return "arap";
+  return garmentcode_pattern(g) ? "xpbd" : "arap";
 }
 
 // The garment stage's progress: a solver's own fraction mapped into [from, to] of the stage,
@@ -137,7 +153,7 @@ Status stage_garment(PipelineState& ps) {
                    {"reason", al->reason}};
     geometry::SewOptions opt;
     opt.target_edge_mm = ps.job.garment.mesh_edge_mm;
-    const std::string solver = sewing_solver(ps.job.garment.sewing, part.pattern);
+    const std::string solver = sewing_solver(ps.job.garment, part.pattern);
     opt.solver = solver == "xpbd" ? geometry::SewSolver::kXpbd : geometry::SewSolver::kArap;
     opt.on_progress = garment_progress(ps, 0.0, ps.job.garment.drape ? 0.5 : 1.0, "sewing");
     auto g = geometry::sew_garment(part.pattern, part.meshes, *ps.body, opt, &stats, &ps.cancel);

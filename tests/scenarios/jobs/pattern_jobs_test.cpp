@@ -129,6 +129,9 @@ TEST(PatternJobs, StitchesFileFromPatternSuggestIsUsedAndTooTightLimitsFailNamin
   EXPECT_NE(err.find("garment checks failed: stitch gap"), std::string::npos) << err;
   EXPECT_NE(err.find("(look at garment-"), std::string::npos) << err;
   EXPECT_EQ(rep["garment"]["checks"]["pass"], false);
+  // "auto" sews a pattern whose pieces come without a placement with XPBD.
+  EXPECT_EQ(rep["sewing"]["solver"], "xpbd") << rep["sewing"].dump();
+  EXPECT_EQ(rep["sewing"]["solver_asked"], "auto") << rep["sewing"].dump();
 }
 
 }  // namespace
