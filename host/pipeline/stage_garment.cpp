@@ -15,6 +15,7 @@
 #include "geometry/garment/flat_garment.h"
 #include "geometry/garment/flat_pieces.h"
 #include "geometry/garment/garment_obj.h"
+#include "geometry/garment/initial_placement.h"
 #include "geometry/pattern/import/load_pattern.h"
 #include "geometry/samples/garments.h"
 #include "geometry/sewing/drape_garment.h"
@@ -132,7 +133,7 @@ Status stage_garment(PipelineState& ps) {
   const std::vector<int> flat = ps.body && !ps.garment ? geometry::unjoined_pieces(ps.pattern) : std::vector<int>{};
 
   geometry::SewStats stats;
-  nlohmann::json alignment;
+  nlohmann::json alignment, start;
   if (ps.plan_garment) {
     // The job's stored plan: never sewn twice (a resume or a reprint prints this garment), and
     // the stitch gaps measured when it was sewn come with it.
@@ -156,6 +157,14 @@ Status stage_garment(PipelineState& ps) {
     const std::string solver = sewing_solver(ps.job.garment, part.pattern);
     opt.solver = solver == "xpbd" ? geometry::SewSolver::kXpbd : geometry::SewSolver::kArap;
     opt.on_progress = garment_progress(ps, 0.0, ps.job.garment.drape ? 0.5 : 1.0, "sewing");
+    // Where the pieces start (the solver places them the same way): inside the body as placed,
+    // and after the push out of it.
+    geometry::PushOutStats pushed;
+    (void)geometry::initial_placement(part.pattern, part.meshes, *ps.body, geometry::kStartClearance_mm, &pushed);
+    start = {{"vertices", pushed.vertices},
+             {"inside_body_placed", pushed.inside_before},
+             {"inside_body_pushed", pushed.inside_after},
+             {"max_push_mm", pushed.max_push_mm}};
     auto g = geometry::sew_garment(part.pattern, part.meshes, *ps.body, opt, &stats, &ps.cancel);
     if (!g) return fail(from_geometry(g.error()));
     std::vector<std::vector<double>> gaps(ps.pattern.stitches.size());
@@ -205,6 +214,7 @@ Status stage_garment(PipelineState& ps) {
                           {"min_clearance_mm", ps.body ? nlohmann::json(d.min_clearance_mm) : nlohmann::json(nullptr)}};
   ps.report["garment"]["stitches"] = stitches_json(ps.pattern, ps.stitch_sources, stats.stitch_gap_mm);
   if (!alignment.is_null()) ps.report["garment"]["alignment"] = alignment;
+  if (!start.is_null()) ps.report["garment"]["start"] = start;
   if (!flat.empty()) {
     nlohmann::json fp = nlohmann::json::array();
     for (int p : flat)

@@ -129,6 +129,10 @@ TEST(PatternJobs, StitchesFileFromPatternSuggestIsUsedAndTooTightLimitsFailNamin
   EXPECT_NE(err.find("garment checks failed: stitch gap"), std::string::npos) << err;
   EXPECT_NE(err.find("(look at garment-"), std::string::npos) << err;
   EXPECT_EQ(rep["garment"]["checks"]["pass"], false);
+  // The pieces start outside the body (pushed out of it), and the report says how many were in.
+  const json& start = rep["garment"]["start"];
+  EXPECT_EQ(start["inside_body_pushed"], 0) << start.dump();
+  EXPECT_GE(start["inside_body_placed"].get<int>(), 0) << start.dump();
   // "auto" sews a pattern whose pieces come without a placement with XPBD.
   EXPECT_EQ(rep["sewing"]["solver"], "xpbd") << rep["sewing"].dump();
   EXPECT_EQ(rep["sewing"]["solver_asked"], "auto") << rep["sewing"].dump();
