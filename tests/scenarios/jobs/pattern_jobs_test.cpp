@@ -136,6 +136,7 @@ TEST(PatternJobs, StitchesFileFromPatternSuggestIsUsedAndTooTightLimitsFailNamin
   // "auto" sews a pattern whose pieces come without a placement with XPBD.
   EXPECT_EQ(rep["sewing"]["solver"], "xpbd") << rep["sewing"].dump();
   EXPECT_EQ(rep["sewing"]["solver_asked"], "auto") << rep["sewing"].dump();
+  EXPECT_EQ(rep["sewing"]["levels"], 1) << rep["sewing"].dump();
 }
 
 }  // namespace
