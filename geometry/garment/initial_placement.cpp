@@ -77,7 +77,8 @@ bool is_band(const Piece& p) {
 
 }  // namespace
 
-std::vector<std::vector<Vec3>> initial_placement(const Pattern& pattern, const PatternMesh& meshes, const BodySdf& body) {
+std::vector<std::vector<Vec3>> initial_placement(const Pattern& pattern, const PatternMesh& meshes, const BodySdf& body,
+                                                 double clearance_mm, PushOutStats* stats) {
   const Box3& bb = body.box();
   const Vec3 centre{(bb.min.x + bb.max.x) / 2, 0, (bb.min.z + bb.max.z) / 2};
   std::vector<std::vector<Vec3>> out(pattern.pieces.size());
@@ -141,6 +142,8 @@ std::vector<std::vector<Vec3>> initial_placement(const Pattern& pattern, const P
       if (r > kMinRollRadiusMm && s_max / r < kMaxRollAngle) roll(pts, foot, d, inward, r);
     }
   }
+  // Whatever placed them (their own placement, a role, a roll), no piece starts inside the body.
+  push_out_of_body(out, meshes, body, clearance_mm, kPushRadius_mm, stats);
   return out;
 }
 

@@ -17,6 +17,9 @@ constexpr double kRayStep_mm = 4;
 constexpr double kGap_mm = 30;
 // A sleeve's cap starts this far down the arm from the shoulder point.
 constexpr double kCapDrop_mm = 20;
+// The arm's axis is found from its centres this far below the shoulders (mm).
+constexpr double kArmSlice1_mm = 200;
+constexpr double kArmSlice2_mm = 320;
 
 bool inside(const BodySdf& b, Vec3 p) { return b.query(p).distance_mm < 0; }
 
@@ -151,19 +154,39 @@ BodyLandmarks find_landmarks(const BodySdf& body) {
   const double shoulder_half = width(L.shoulder_y - kSliceStep_mm);
   L.shoulder_l = {L.axis.x + shoulder_half, L.shoulder_y, L.axis.z};
   L.shoulder_r = {L.axis.x - shoulder_half, L.shoulder_y, L.axis.z};
-  // Arms: below the shoulders, the first solid beyond a gap outside the torso's side.
-  for (int side : {1, -1}) {
-    const double y = L.shoulder_y - 200;
+  L.arm_top_l = L.shoulder_l;
+  L.arm_top_r = L.shoulder_r;
+  // Arms: below the shoulders, the first solid beyond a gap outside the torso's side, its centre
+  // on a horizontal ray. Two such centres (200 and 320 mm below the shoulders) give the arm's
+  // axis; with one, the axis runs from the shoulder point to it (a raised arm's second slice may
+  // miss it). A line from the shoulder point alone tilted a 45-degree dress-form arm to 32 degrees
+  // and left sleeve hems 60 mm off the arm.
+  auto arm_centre = [&](int side, double y, Vec3& centre) {
     const Vec3 dir{static_cast<double>(side), 0, 0};
     const Vec3 start = at(y);
     double s = extent(body, start, dir, reach);
     while (s < reach && !inside(body, start + dir * s)) s += kRayStep_mm;
-    if (s >= reach) continue;
-    double run = extent(body, start + dir * s, dir, reach);
-    Vec3 arm = start + dir * (s + run / 2);
-    Vec3 from = side > 0 ? L.shoulder_l : L.shoulder_r;
-    Vec3 d = arm - from;
-    if (norm(d) > 0) (side > 0 ? L.arm_dir_l : L.arm_dir_r) = normalized(d);
+    if (s >= reach) return false;
+    const double run = extent(body, start + dir * s, dir, reach);
+    centre = start + dir * (s + run / 2);
+    // The arm need not be centred on the torso's axis front to back (a dress form's is 8 mm behind).
+    centre.z += (extent(body, centre, {0, 0, 1}, reach) - extent(body, centre, {0, 0, -1}, reach)) / 2;
+    return true;
+  };
+  for (int side : {1, -1}) {
+    Vec3 a1, a2;
+    if (!arm_centre(side, L.shoulder_y - kArmSlice1_mm, a1)) continue;
+    const Vec3 from = side > 0 ? L.shoulder_l : L.shoulder_r;
+    Vec3& dir = side > 0 ? L.arm_dir_l : L.arm_dir_r;
+    Vec3& top = side > 0 ? L.arm_top_l : L.arm_top_r;
+    if (arm_centre(side, L.shoulder_y - kArmSlice2_mm, a2) && norm(a2 - a1) > 0 && (a2.x - a1.x) * side > 0) {
+      dir = normalized(a2 - a1);
+      // Where the axis passes the shoulder point: the sleeve cap's top.
+      top = a1 + dir * dot(from - a1, dir);
+    } else if (norm(a1 - from) > 0) {
+      dir = normalized(a1 - from);
+      top = from;
+    }
   }
   return L;
 }
@@ -251,7 +274,7 @@ std::vector<Placement3d> role_placements(const Pattern& pattern, const BodySdf& 
     }
     const bool left = x_count ? x_sum > 0 : !p.mirrored;
 
-    const Vec3 shoulder = left ? L.shoulder_l : L.shoulder_r;
+    const Vec3 shoulder = left ? L.arm_top_l : L.arm_top_r;
     const Vec3 down = left ? L.arm_dir_l : L.arm_dir_r;
     const Vec3 up = -down;
     // Outward from the body, perpendicular to the arm, in the arm's vertical plane.

@@ -9,8 +9,8 @@
 namespace tp::geometry {
 
 /// Heights and extents of a standing body found from horizontal slices of its signed distance
-/// (mm, body frame). Arms are found as the first solid beyond the torso's side at a slice
-/// below the shoulders.
+/// (mm, body frame). Arms are found as the first solid beyond the torso's side at two slices
+/// below the shoulders; their centres give the arm's axis.
 struct BodyLandmarks {
   Vec3 axis;                   ///< a point of the torso's vertical axis (y = 0)
   double top_y = 0;            ///< highest point
@@ -21,7 +21,8 @@ struct BodyLandmarks {
   double side_x = 0;           ///< torso half width at the bust
   double waist_front_z = 0, waist_back_z = 0;  ///< the same at the waist
   Vec3 shoulder_l, shoulder_r;  ///< shoulder points (+x is the wearer's left)
-  Vec3 arm_dir_l{0.7, -0.7, 0}, arm_dir_r{-0.7, -0.7, 0};  ///< unit, from the shoulder down the arm
+  Vec3 arm_dir_l{0.7, -0.7, 0}, arm_dir_r{-0.7, -0.7, 0};  ///< unit, down the arm's axis
+  Vec3 arm_top_l, arm_top_r;  ///< where the arm's axis passes the shoulder point (a sleeve cap's top)
 };
 
 /// Landmarks of `body` (any body the project sews on: dress form, scanned or average body).

@@ -53,7 +53,7 @@ struct GarmentSpec {
   double mesh_edge_mm = 15;                           ///< target triangle edge length
   GarmentMaterialSpec material;                       ///< fabric of the drape
   bool drape = true;                                  ///< settle the sewn garment under gravity (previews)
-  std::string sewing = "arap";                        ///< sewing solver: "arap" or "xpbd" (self-collision)
+  std::string sewing = "auto";                        ///< sewing solver: "auto", "arap" or "xpbd" (self-collision)
   std::string correspondence = "sewn";                ///< "sewn" or "draped": the garment the design is made on
 };
 

@@ -92,7 +92,7 @@ void read_garment(FieldReader g, const JobPackage* pkg, GarmentSpec& spec) {
   }
   read_material(g, spec.material);
   if (auto v = g.boolean("drape", false)) spec.drape = *v;
-  if (auto v = g.choice("sewing", false, {"arap", "xpbd"})) spec.sewing = *v;
+  if (auto v = g.choice("sewing", false, {"auto", "arap", "xpbd"})) spec.sewing = *v;
   if (auto v = g.choice("correspondence", false, {"sewn", "draped"})) spec.correspondence = *v;
   if (spec.correspondence == "draped" && !spec.drape)
     g.problems().add(g.pointer_of("correspondence"), "\"draped\" needs \"drape\": true");

@@ -2,6 +2,7 @@
 // continuity measured on the rendered contone raster, and the cut files.
 #include <cctype>
 #include <filesystem>
+#include <set>
 
 #include "geometry/continuity/continuity.h"
 #include "geometry/cutfile/cut_job.h"
@@ -91,13 +92,23 @@ Status stage_outputs(PipelineState& ps) {
   auto& warnings = ps.report["warnings"];
   if (!warnings.is_array()) warnings = nlohmann::json::array();
   for (const std::string& w : ps.pattern.warnings) warnings.push_back("pattern: " + w);
+  const nlohmann::json& report = ps.report;  // const: looking up a section must not add it
+  const nlohmann::json* checks = nullptr;
+  if (report.contains("garment") && report["garment"].contains("checks")) checks = &report["garment"]["checks"];
+  // A piece the garment checks list as printed flat gets that one warning (below), not two.
+  std::vector<std::string> flat_pieces;
+  if (checks && checks->is_object() && checks->contains("unsewn_pieces") && (*checks)["unsewn_pieces"].is_array())
+    for (const nlohmann::json& name : (*checks)["unsewn_pieces"])
+      if (name.is_string()) flat_pieces.push_back(name.get<std::string>());
+  const std::set<std::string> flat_warned(flat_pieces.begin(), flat_pieces.end());
   if (!ps.pattern.stitches.empty()) {
     std::vector<bool> sewn(ps.pattern.pieces.size(), false);
     for (const geometry::Stitch& s : ps.pattern.stitches)
       for (int p : {s.a.piece, s.b.piece})
         if (p >= 0 && static_cast<size_t>(p) < sewn.size()) sewn[static_cast<size_t>(p)] = true;
     for (size_t i = 0; i < sewn.size(); ++i)
-      if (!sewn[i]) warnings.push_back("piece '" + ps.pattern.pieces[i].name + "' is joined to no other piece by a stitch");
+      if (!sewn[i] && !flat_warned.count(ps.pattern.pieces[i].name))
+        warnings.push_back("piece '" + ps.pattern.pieces[i].name + "' is joined to no other piece by a stitch");
   }
   size_t suggested = 0;
   for (const nlohmann::json& src : ps.stitch_sources) suggested += src.value("source", "") == "suggested";
@@ -107,14 +118,9 @@ Status stage_outputs(PipelineState& ps) {
   if (ps.garment && !ps.garment_is_3d)
     warnings.push_back("garment: the pieces are laid flat, not sewn on a body: print continuity is matched along the "
                        "stitches in 2D only");
-  const nlohmann::json& report = ps.report;  // const: looking up a section must not add it
-  const nlohmann::json* checks = nullptr;
-  if (report.contains("garment") && report["garment"].contains("checks")) checks = &report["garment"]["checks"];
-  if (checks && checks->is_object() && checks->contains("unsewn_pieces") && (*checks)["unsewn_pieces"].is_array())
-    for (const nlohmann::json& name : (*checks)["unsewn_pieces"])
-      if (name.is_string())
-        warnings.push_back("garment: piece '" + name.get<std::string>() +
-                           "' is joined to no other piece: printed flat, not part of the 3D garment");
+  for (const std::string& name : flat_pieces)
+    warnings.push_back("garment: piece '" + name +
+                       "' is joined to no other piece: printed flat, not part of the 3D garment");
   // The draped garment only gives previews (unless the job takes its correspondence): a drape
   // that folded through itself does not fail the job, but its pictures are not to be trusted.
   if (report.contains("garment") && report["garment"].contains("drape")) {

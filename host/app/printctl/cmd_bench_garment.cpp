@@ -18,6 +18,7 @@
 #include "geometry/garment/distortion.h"
 #include "geometry/garment/fit_checks.h"
 #include "geometry/garment/flat_pieces.h"
+#include "geometry/garment/initial_placement.h"
 #include "geometry/mesh/mesh_pattern.h"
 #include "geometry/pattern/import/garmentcode.h"
 #include "geometry/pattern/import/load_pattern.h"
@@ -150,6 +151,16 @@ void bench_one(const std::string& name, geometry::Pattern pattern, const geometr
     g = geometry::garment_without(*whole, flat);
   }
   const double seconds = since(t0);
+  // Where the pieces started: vertices inside the body as placed, and after the push out of it.
+  geometry::PushOutStats start;
+  {
+    geometry::TriangulateOptions to;
+    to.target_edge_mm = o.target_edge_mm;
+    auto meshes = geometry::mesh_pattern(pattern, to);
+    if (!meshes) return error_line(meshes.error().what());
+    geometry::PatternPart part = geometry::pattern_without(pattern, *meshes, flat);
+    (void)geometry::initial_placement(part.pattern, part.meshes, body, geometry::kStartClearance_mm, &start);
+  }
   geometry::DistortionReport r = geometry::measure_distortion(pattern, *g, &body);
   geometry::FitReport fit = geometry::check_fit(pattern, *g, &body, stats.stitch_gap_mm, a.limits);
   if (!a.out.empty()) {
@@ -187,15 +198,17 @@ void bench_one(const std::string& name, geometry::Pattern pattern, const geometr
   for (const auto& f : fit.failures) failed += (failed.empty() ? "" : ",") + f.check;
   std::printf(
       "garment=%s vertices=%d stitches=%zu suggested=%d stitch_gap_max_mm=%.2f stitch_gap_p95_mm=%.2f "
-      "self_intersections=%d inside_body=%d body_distance_p50_mm=%.1f body_distance_p95_mm=%.1f off_body=%.4f "
-      "unsewn=%zu "
+      "self_intersections=%d inside_body=%d min_clearance_mm=%.1f body_distance_p50_mm=%.1f body_distance_p95_mm=%.1f "
+      "off_body=%.4f "
+      "unsewn=%zu start_inside=%d start_inside_pushed=%d start_max_push_mm=%.1f "
       "strain_mean=%.4f strain_p95=%.4f seam_len_diff_max=%.4f aligned=%s seconds=%.2f drape_seconds=%.2f "
       "drape_self_intersections=%d drape_inside_body=%d drape_strain_p95=%.4f "
       "gathered_fraction=%.3f checks=%s%s%s\n",
       name.c_str(), r.vertices, pattern.stitches.size(), suggested, fit.stitch_gap_max_mm, fit.stitch_gap_p95_mm,
-      fit.self_intersections, fit.inside_body, fit.body_distance_p50_mm, fit.body_distance_p95_mm, fit.off_body,
-      fit.unsewn_pieces.size(), r.strain_mean, r.strain_p95, r.seam_len_diff_max, aligned ? "yes" : "no", seconds,
-      drape_seconds, drape_self, drape_inside, drape_strain_p95, gathered_fraction(r), fit.pass ? "pass" : "fail",
+      fit.self_intersections, fit.inside_body, r.min_clearance_mm, fit.body_distance_p50_mm, fit.body_distance_p95_mm,
+      fit.off_body, fit.unsewn_pieces.size(), start.inside_before, start.inside_after, start.max_push_mm, r.strain_mean,
+      r.strain_p95, r.seam_len_diff_max, aligned ? "yes" : "no", seconds, drape_seconds, drape_self, drape_inside,
+      drape_strain_p95, gathered_fraction(r), fit.pass ? "pass" : "fail",
       failed.empty() ? "" : " failed=", failed.c_str());
   for (const auto& f : fit.failures) std::printf("  %s: %s (look at %s_%s.png)\n", f.check.c_str(), f.message.c_str(), name.c_str(), f.view.c_str());
   std::fflush(stdout);

@@ -59,8 +59,11 @@ TEST_F(GarmentMaterialTest, BadValuesNameTheField) {
   EXPECT_NE(job.error().message.find("/garment/correspondence"), std::string::npos) << job.error().message;
 }
 
-TEST_F(GarmentMaterialTest, SewingSolverIsArapByDefaultOrXpbd) {
+TEST_F(GarmentMaterialTest, SewingSolverIsAutoByDefaultOrArapOrXpbd) {
   auto job = load("");
+  ASSERT_TRUE(job) << job.error().message;
+  EXPECT_EQ(job->garment.sewing, "auto");
+  job = load(R"(, "sewing": "arap")");
   ASSERT_TRUE(job) << job.error().message;
   EXPECT_EQ(job->garment.sewing, "arap");
   job = load(R"(, "sewing": "xpbd")");

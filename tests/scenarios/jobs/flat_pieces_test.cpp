@@ -78,6 +78,10 @@ TEST(FlatPieces, AnUnjoinedPieceIsPrintedFlatNestedAndCutButNotSewn) {
   EXPECT_NE(g["flat_pieces"][0]["reason"].get<std::string>().find("no stitch joins it"), std::string::npos);
   EXPECT_EQ(g["checks"]["pass"], true) << g["checks"].dump(1);
   EXPECT_EQ(g["checks"]["unsewn_pieces"], json::array({"label"}));
+  // One warning for the flat piece, not one from the stitches and another from the checks.
+  int label_warnings = 0;
+  for (const json& w : rep["warnings"]) label_warnings += w.get<std::string>().find("'label'") != std::string::npos;
+  EXPECT_EQ(label_warnings, 1) << rep["warnings"].dump(1);
   // Not part of the 3D garment: its group in garment.obj has no faces.
   std::istringstream obj(read_text(dir / "out3d/garment.obj"));
   std::string line, group;
