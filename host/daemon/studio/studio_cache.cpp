@@ -24,6 +24,15 @@ StudioCache::StudioCache(fs::path root, std::size_t capacity)
   fs::remove_all(root_, ec);
 }
 
+StudioCache::~StudioCache() {
+  {
+    std::lock_guard lock(mu_);
+    index_.clear();
+    order_.clear();
+  }
+  wait_for_print_sewings();
+}
+
 Result<std::pair<std::string, fs::path>> StudioCache::new_session() {
   static std::mutex rng_mu;
   static std::random_device rd;

@@ -20,6 +20,10 @@ class StudioCache {
   /// Session folders go under `root` (created on first use); `root`'s siblings named studio-*,
   /// earlier runs' sessions, are removed.
   StudioCache(std::filesystem::path root, std::size_t capacity);
+  /// Drops every garment (cancelling their background sewings) and waits for those to end.
+  ~StudioCache();
+  StudioCache(const StudioCache&) = delete;
+  StudioCache& operator=(const StudioCache&) = delete;
 
   /// A fresh unguessable id (16 hex digits) and its session folder, created with assets/.
   [[nodiscard]] Result<std::pair<std::string, std::filesystem::path>> new_session();

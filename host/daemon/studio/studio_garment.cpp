@@ -6,9 +6,10 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
+#include <condition_variable>
 #include <fstream>
+#include <mutex>
 #include <sstream>
 #include <thread>
 
@@ -61,7 +62,32 @@ StudioGarment::~StudioGarment() {
 
 namespace {
 
-std::atomic<int> print_sewings_running{0};
+// The background sewings running now: counted so that printd can wait for them before it exits
+// (their threads use the process's thread pool and logger, which static destruction takes down).
+struct PrintSewings {
+  std::mutex mu;
+  std::condition_variable ended;
+  int running = 0;
+};
+PrintSewings& print_sewings() {
+  static PrintSewings* s = new PrintSewings;  // never destroyed: a detached thread may still signal it
+  return *s;
+}
+bool try_begin_print_sewing(int at_most) {
+  PrintSewings& s = print_sewings();
+  std::lock_guard lock(s.mu);
+  if (s.running >= at_most) return false;
+  ++s.running;
+  return true;
+}
+void end_print_sewing() {
+  PrintSewings& s = print_sewings();
+  {
+    std::lock_guard lock(s.mu);
+    --s.running;
+  }
+  s.ended.notify_all();
+}
 constexpr int kPrintSewingsAtOnce = 2;
 constexpr int kPrintSewingNice = 10;
 
@@ -71,13 +97,10 @@ void start_print_garment(StudioGarment& g, const PackageLimits& limits) {
   json section = g.print_garment_section;
   section["drape"] = false;
   if (section == g.garment_section || g.print_sewing) return;
-  if (print_sewings_running.fetch_add(1) >= kPrintSewingsAtOnce) {
-    print_sewings_running.fetch_sub(1);
-    return;
-  }
+  if (!try_begin_print_sewing(kPrintSewingsAtOnce)) return;
   auto job = parse_studio_job(g, studio_manifest(g, {{"garment", section}}, true), limits);
   if (!job) {
-    print_sewings_running.fetch_sub(1);
+    end_print_sewing();
     return;  // a save reports the same error when it sews
   }
   auto state = std::make_shared<PrintGarmentSewing>();
@@ -107,8 +130,14 @@ void start_print_garment(StudioGarment& g, const PackageLimits& limits) {
     } else {
       spdlog::info("printd: studio garment {}: the print garment sewn in the background in {:.1f} s", id, s);
     }
-    print_sewings_running.fetch_sub(1);
+    end_print_sewing();
   }).detach();
+}
+
+void wait_for_print_sewings() {
+  PrintSewings& s = print_sewings();
+  std::unique_lock lock(s.mu);
+  s.ended.wait(lock, [&] { return s.running == 0; });
 }
 
 Result<std::shared_ptr<const JobGarment>> await_print_garment(StudioGarment& g, const json& section) {
