@@ -2,6 +2,7 @@
 #pragma once
 
 #include <cmath>
+#include <numbers>
 #include <vector>
 
 namespace tp::geometry {
@@ -76,7 +77,7 @@ struct Affine2 {
   static Affine2 translation(Vec2 t) { return {1, 0, t.x, 0, 1, t.y}; }
   static Affine2 scale(double sx, double sy) { return {sx, 0, 0, 0, sy, 0}; }
   static Affine2 rotation_deg(double deg) {
-    double r = deg * 3.14159265358979323846 / 180.0, cs = std::cos(r), sn = std::sin(r);
+    double r = deg * std::numbers::pi / 180.0, cs = std::cos(r), sn = std::sin(r);
     return {cs, -sn, 0, sn, cs, 0};
   }
 };

@@ -7,15 +7,15 @@
 #include <cctype>
 #include <cmath>
 #include <map>
+#include <numbers>
 #include <string>
 
 namespace tp::geometry {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 // Pieces nearer than this to their roll axis, or rolled further round than this, stay flat.
 constexpr double kMinRollRadiusMm = 30;
-constexpr double kMaxRollAngle = 0.8 * kPi;
+constexpr double kMaxRollAngle = 0.8 * std::numbers::pi;
 // A rolled piece placed by its role keeps this far from the body (mm).
 constexpr double kRollClearance_mm = 25;
 
@@ -59,7 +59,7 @@ double body_radius(const BodySdf& body, Vec3 centre, double lo, double hi) {
   double r = 0;
   for (double y = lo; y <= hi; y += 20)
     for (int k = 0; k < 24; ++k) {
-      const double a = 2 * kPi * k / 24;
+      const double a = 2 * std::numbers::pi * k / 24;
       const Vec3 from{centre.x, y, centre.z}, dir{std::cos(a), 0, std::sin(a)};
       double t = 0;
       while (t < kMax_mm && body.query(from + dir * t).distance_mm < 0) t += kStep_mm;
@@ -106,7 +106,7 @@ std::vector<std::vector<Vec3>> initial_placement(const Pattern& pattern, const P
       // its middle where it was placed (in front).
       const Vec3 round = y_round ? d : ex, up = y_round ? ex : d;
       const double len = std::abs(dot(rotate(pl, pb.max) - rotate(pl, pb.min), round));
-      const double r = len / (2 * kPi);
+      const double r = len / (2 * std::numbers::pi);
       Vec3 outward = Vec3{c3.x - centre.x, 0, c3.z - centre.z};
       outward = norm(outward) > 0 ? normalized(outward) : Vec3{0, 0, 1};
       const Vec3 foot = Vec3{centre.x, c3.y, centre.z} + outward * r;
@@ -116,7 +116,7 @@ std::vector<std::vector<Vec3>> initial_placement(const Pattern& pattern, const P
       // Roll into a tube of its own width around an axis on the body's side of the piece.
       Vec3 to_body = Vec3{centre.x, c3.y, centre.z} - c3;
       Vec3 inward = dot(to_body, n) >= 0 ? n : -n;
-      roll(pts, c3, d, inward, pb.width() / (2 * kPi));
+      roll(pts, c3, d, inward, pb.width() / (2 * std::numbers::pi));
     } else if (std::abs(d.y) > 0.8) {
       // Roll around the body's vertical axis if the piece faces it and does not wrap too far.
       Vec3 axis_pt{centre.x, c3.y, centre.z};

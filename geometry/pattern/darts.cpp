@@ -3,7 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
-
+#include <numbers>
 
 namespace tp::geometry {
 
@@ -15,7 +15,7 @@ int detect_darts(Piece& piece) {
     if (d.leg_a >= 0 && d.leg_a < n) used[d.leg_a] = true;
     if (d.leg_b >= 0 && d.leg_b < n) used[d.leg_b] = true;
   }
-  const double max_open = kMaxDartOpening_deg * 3.14159265358979323846 / 180;
+  const double max_open = kMaxDartOpening_deg * std::numbers::pi / 180;
   int added = 0;
   for (int a = 0; a < n; ++a) {
     int b = (a + 1) % n;

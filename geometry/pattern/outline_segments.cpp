@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 #include "geometry/pattern/curve.h"
 
@@ -32,7 +33,7 @@ std::vector<Edge> edges_from_segments(std::vector<OutlineSegment> segments, doub
   const size_t n = segments.size();
   std::vector<Edge> out;
   if (n == 0) return out;
-  const double cos_limit = std::cos(corner_angle_deg * 3.14159265358979323846 / 180);
+  const double cos_limit = std::cos(corner_angle_deg * std::numbers::pi / 180);
   std::vector<bool> corner(n, false);
   for (size_t i = 0; i < n; ++i) {
     const OutlineSegment& prev = segments[(i + n - 1) % n];

@@ -3,10 +3,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace tp::geometry {
 namespace {
-constexpr double kDegToRad = 3.14159265358979323846 / 180.0;
+constexpr double kDegToRad = std::numbers::pi / 180.0;
 }
 
 std::array<double, 9> rotation_from_euler_xyz_deg(double rx_deg, double ry_deg, double rz_deg) {

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <numbers>
 
 namespace tp::geometry::nesting {
 
@@ -42,7 +43,7 @@ class Rng {
   /// |N(0, sigma)| by the Box-Muller transform, for biased choices from sorted pools.
   double abs_normal(double sigma) {
     const double u1 = 1.0 - uniform(), u2 = uniform();
-    return std::fabs(sigma * std::sqrt(-2.0 * std::log(u1)) * std::cos(6.283185307179586 * u2));
+    return std::fabs(sigma * std::sqrt(-2.0 * std::log(u1)) * std::cos(2 * std::numbers::pi * u2));
   }
 
  private:

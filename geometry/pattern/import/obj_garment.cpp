@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <numbers>
 #include <numeric>
 #include <set>
 
@@ -157,7 +158,7 @@ Result<ObjGarment> read_obj_garment(std::string_view text, const std::string& so
   }
 
   // Edge breaks: where the neighbour changes or the outline turns a corner, on both sides of a seam.
-  const double cos_limit = std::cos(options.corner_angle_deg * 3.14159265358979323846 / 180);
+  const double cos_limit = std::cos(options.corner_angle_deg * std::numbers::pi / 180);
   for (size_t i = 0; i < islands.size(); ++i) {
     Island& is = islands[i];
     const int n = static_cast<int>(is.loop.size());
