@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 
 namespace tp::host {
 
@@ -49,7 +50,7 @@ std::pair<double, double> section_at(const geometry::TorsoSection& s, double th)
       s.centre_z_mm + (sn >= 0 ? s.front_mm : s.back_mm) * std::copysign(std::pow(std::abs(sn), 2 / s.exponent), sn)};
 }
 
-constexpr double kArcStep = 2 * 3.14159265358979323846 / 2048;
+constexpr double kArcStep = 2 * std::numbers::pi / 2048;
 
 // Signed arc length along section `s` from parameter t0 to t1 (t1 < t0: negative).
 double arc_length(const geometry::TorsoSection& s, double t0, double t1) {
@@ -107,8 +108,8 @@ std::vector<Vec3> SizeMapping::map_stroke(const std::vector<Vec3>& pts) const {
     const double ta = section_angle(qa.u / qa.rho, qa.v / qa.rho, sb.exponent);
     const double tp = section_angle(q.u / q.rho, q.v / q.rho, sb.exponent);
     double d = tp - ta;
-    if (d > 3.14159265358979323846) d -= 2 * 3.14159265358979323846;
-    if (d < -3.14159265358979323846) d += 2 * 3.14159265358979323846;
+    if (d > std::numbers::pi) d -= 2 * std::numbers::pi;
+    if (d < -std::numbers::pi) d += 2 * std::numbers::pi;
     const double along = arc_length(sb, ta, ta + d);
     // The anchor's direction on the target section, as map_point finds it.
     const double us = qa.u / qa.rho, vs = qa.v / qa.rho;
