@@ -14,6 +14,7 @@
 
 #include "device/model/printer_model_file.h"
 #include "host/calibration/chart_layout.h"
+#include "host/job/printer_choice.h"
 #include "rip/colour/lab_image.h"
 #include "rip/image/image_io.h"
 
@@ -105,7 +106,11 @@ Status write_chart_job(const fs::path& dir, const ChartLayout& chart, const Cali
       {"marker",
        {{"fabric_width", std::to_string(std::ceil(w + 60)) + " mm"}, {"rotations", "fixed"}, {"time_limit_s", 1}}},
       {"print",
-       {{"printer", "sim"}, {"printer_model", "printer.tpm"}, {"dpi", o.dpi}, {"passes", 1}, {"preview_dpi", 40}}}};
+       {{"printer", std::string(to_string(PrinterChoice::kSim))},
+        {"printer_model", "printer.tpm"},
+        {"dpi", o.dpi},
+        {"passes", 1},
+        {"preview_dpi", 40}}}};
   if (!extras.device_inks.empty()) job["print"]["device_inks"] = extras.device_inks;
   if (extras.calibration) {
     // The set travels inside the chart's package, as a job's assets do.
