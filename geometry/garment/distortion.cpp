@@ -1,5 +1,6 @@
 // geometry/garment/distortion.cpp: strain, area change, seam lengths and body clearance of a garment.
 #include "geometry/garment/distortion.h"
+#include "geometry/common/tolerances.h"
 
 #include <algorithm>
 #include <cmath>
@@ -14,7 +15,7 @@ constexpr double kSpanTolMm = 0.05;
 std::pair<double, double> singular_values(const std::array<Vec2, 3>& p, const std::array<Vec3, 3>& x) {
   Vec2 e1 = p[1] - p[0], e2 = p[2] - p[0];
   double det = cross(e1, e2);
-  if (std::abs(det) < 1e-12) return {1, 1};
+  if (std::abs(det) < kParallelDeterminant) return {1, 1};
   Vec3 d1 = x[1] - x[0], d2 = x[2] - x[0];
   // F = [d1 d2] Dm^-1.
   double i00 = e2.y / det, i01 = -e2.x / det, i10 = -e1.y / det, i11 = e1.x / det;

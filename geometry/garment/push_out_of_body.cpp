@@ -1,5 +1,6 @@
 // geometry/garment/push_out_of_body.cpp: a smooth per-piece push that clears placed pieces of the body.
 #include "geometry/garment/push_out_of_body.h"
+#include "geometry/common/tolerances.h"
 
 #include <algorithm>
 #include <cmath>
@@ -30,7 +31,7 @@ constexpr int kWholePasses = 2;
 Vec3 way_out(const BodySdf& body, Vec3 p, Vec3 axis, double& length_mm) {
   double best = kMaxExit_mm;
   Vec3 best_dir{p.x - axis.x, 0, p.z - axis.z};
-  best_dir = norm(best_dir) > 1e-9 ? normalized(best_dir) : Vec3{0, 0, 1};
+  best_dir = norm(best_dir) > kMinDivisor ? normalized(best_dir) : Vec3{0, 0, 1};
   for (int i = -1; i <= 1; ++i)
     for (int j = -1; j <= 1; ++j)
       for (int k = -1; k <= 1; ++k) {

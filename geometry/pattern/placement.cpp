@@ -7,6 +7,9 @@
 
 namespace tp::geometry {
 namespace {
+
+/// |sin(ry)| this close to 1 is gimbal lock: rx and rz are then not separable.
+constexpr double kGimbalLockSlack = 1e-12;
 constexpr double kDegToRad = std::numbers::pi / 180.0;
 }
 
@@ -24,7 +27,7 @@ Vec3 euler_xyz_deg_from_rotation(const std::array<double, 9>& r) {
   double sy = std::clamp(-r[6], -1.0, 1.0);
   double ry = std::asin(sy);
   double rx, rz;
-  if (std::abs(sy) < 1 - 1e-12) {
+  if (std::abs(sy) < 1 - kGimbalLockSlack) {
     rx = std::atan2(r[7], r[8]);
     rz = std::atan2(r[3], r[0]);
   } else {

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <numeric>
 
+#include "geometry/common/tolerances.h"
 #include "geometry/garment/initial_placement.h"
 #include "geometry/sewing/internal/arap_solver.h"
 #include "geometry/sewing/internal/xpbd_sewing.h"
@@ -80,7 +81,7 @@ std::vector<Vec3> interpolate_chart(const GarmentPiece& coarse, const std::vecto
     for (const auto& t : coarse.mesh.triangles) {
       Vec2 a = cv[t[0]], b = cv[t[1]], c = cv[t[2]];
       double det = cross(b - a, c - a);
-      if (std::abs(det) < 1e-12) continue;
+      if (std::abs(det) < kParallelDeterminant) continue;
       double l1 = cross(p - a, c - a) / det, l2 = cross(b - a, p - a) / det, l0 = 1 - l1 - l2;
       // Outside distance in barycentric terms: 0 inside the triangle.
       double out_by = std::max({-l0, -l1, -l2, 0.0});

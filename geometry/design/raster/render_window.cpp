@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "geometry/common/tolerances.h"
 #include "geometry/design/raster/span_sampler.h"
 
 namespace tp::geometry::internal {
@@ -102,7 +103,7 @@ void accumulate(float* acc, int width, const OutlineEdge& e, int row, int& touch
   const int c0 = static_cast<int>(xa), c1 = std::min(static_cast<int>(xb), width);
   touched0 = c0;
   touched1 = c1 + 2;
-  if (xb - xa < 1e-9) {
+  if (xb - xa < kBoundarySlack) {
     // The coverage to the right of a piece at x within cell c: (c + 1 - x) here, the rest next.
     const double f = xa - c0;
     acc[c0] += static_cast<float>(d * (1 - f));

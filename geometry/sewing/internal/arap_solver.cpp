@@ -11,9 +11,13 @@
 #include <limits>
 
 #include "geometry/common/thread_pool.h"
+#include "geometry/common/tolerances.h"
 
 namespace tp::geometry::internal {
 namespace {
+
+/// A deformation whose largest squared singular value is below this has collapsed to a point.
+constexpr double kZeroStretch = 1e-20;
 
 // Vertices whose interpolated distance exceeds the clearance by this many grid steps are free.
 constexpr double kCullCells = 0.4;
@@ -47,7 +51,7 @@ TriConst triangle_constants(const std::array<Vec2, 3>& r) {
   Vec2 e1 = r[1] - r[0], e2 = r[2] - r[0];
   double det = cross(e1, e2);
   c.area = 0.5 * std::abs(det);
-  if (std::abs(det) < 1e-12) return c;
+  if (std::abs(det) < kParallelDeterminant) return c;
   // Dm = [e1 e2]; Dm^-1 rows.
   double inv[2][2] = {{e2.y / det, -e2.x / det}, {-e1.y / det, e1.x / det}};
   for (int j = 0; j < 2; ++j) {
@@ -65,8 +69,12 @@ void closest_rotation(Vec3 f0, Vec3 f1, Vec3& r0, Vec3& r1) {
   double tr = a + d, det = a * d - b * b;
   double disc = std::sqrt(std::max(tr * tr / 4 - det, 0.0));
   double l1 = tr / 2 + disc, l2 = std::max(tr / 2 - disc, 0.0);
-  if (l1 < 1e-20) { r0 = {1, 0, 0}; r1 = {0, 1, 0}; return; }
-  if (l2 < 1e-12 * l1) {
+  if (l1 < kZeroStretch) {
+    r0 = {1, 0, 0};
+    r1 = {0, 1, 0};
+    return;
+  }
+  if (l2 < kParallelDeterminant * l1) {
     // Degenerate (collapsed) triangle: keep the dominant direction, pick any orthogonal one.
     r0 = normalized(f0 + f1 * 0.0);
     if (norm(r0) == 0) r0 = {1, 0, 0};

@@ -8,6 +8,13 @@
 namespace tp::geometry::internal {
 namespace {
 
+/// A bending hinge shorter than this (mm), or with a wing of squared doubled area below
+/// kHingeMinArea2 (mm^4), has no defined angle: it exerts no force.
+constexpr double kHingeMinLength_mm = 1e-12;
+constexpr double kHingeMinArea2 = 1e-20;
+/// A rest triangle whose 2D determinant (twice its area, mm^2) is below this is skipped.
+constexpr double kDegenerateRestArea = 1e-9;
+
 // Bending rigidity from micro-newton metres to the solver's g mm^2 / s^2.
 constexpr double kUNmToGmm2s2 = 1e3;
 
@@ -25,7 +32,7 @@ double dihedral_angle(const std::vector<Vec3>& x, const BendStencil& s, std::arr
   // Normals of (a, b, c) and (b, a, d), both following their triangle's winding.
   const Vec3 n1 = cross(e, c - a), n2 = cross(d - a, e);
   const double q1 = dot(n1, n1), q2 = dot(n2, n2);
-  if (le < 1e-12 || q1 < 1e-20 || q2 < 1e-20) {
+  if (le < kHingeMinLength_mm || q1 < kHingeMinArea2 || q2 < kHingeMinArea2) {
     if (grad) grad->fill(Vec3{});
     return s.rest_angle;
   }
@@ -62,7 +69,7 @@ ClothModel build_cloth_model(const Garment& g, const ClothMaterial& m) {
       const Vec2 r0 = gp.mesh.vertices_mm[t[0]], r1 = gp.mesh.vertices_mm[t[1]], r2 = gp.mesh.vertices_mm[t[2]];
       const Vec2 e1 = r1 - r0, e2 = r2 - r0;
       const double det = cross(e1, e2);
-      if (std::abs(det) < 1e-9) continue;
+      if (std::abs(det) < kDegenerateRestArea) continue;
       const Vec2 centroid = (r0 + r1 + r2) / 3.0;
       rt.rest_mm = {r0 - centroid, r1 - centroid, r2 - centroid};
       rt.dm_inv[0][0] = e2.y / det, rt.dm_inv[0][1] = -e2.x / det;

@@ -7,6 +7,7 @@
 #include <cstdint>
 
 #include "geometry/common/closest_point_on_triangle.h"
+#include "geometry/common/tolerances.h"
 
 namespace tp::geometry::internal {
 namespace {
@@ -65,7 +66,7 @@ std::array<double, 2> closest_on_segments(Vec3 p0, Vec3 p1, Vec3 q0, Vec3 q1) {
   const double a = dot(d1, d1), e = dot(d2, d2), f = dot(d2, r);
   if (a < 1e-18 || e < 1e-18) return {0, 0};
   const double c = dot(d1, r), b = dot(d1, d2), denom = a * e - b * b;
-  double s = denom > 1e-12 * a * e ? std::clamp((b * f - c * e) / denom, 0.0, 1.0) : 0.0;
+  double s = denom > kParallelDeterminant * a * e ? std::clamp((b * f - c * e) / denom, 0.0, 1.0) : 0.0;
   double t = (b * s + f) / e;
   if (t < 0) t = 0, s = std::clamp(-c / a, 0.0, 1.0);
   else if (t > 1) t = 1, s = std::clamp((b - c) / a, 0.0, 1.0);
@@ -228,7 +229,7 @@ SelfCollisionPairs find_self_collision_pairs(const ClothModel& cloth, const std:
         const auto st = closest_on_segments(x[ea[0]], x[ea[1]], x[eb[0]], x[eb[1]]);
         const Vec3 pa = x[ea[0]] * (1 - st[0]) + x[ea[1]] * st[0], pb = x[eb[0]] * (1 - st[1]) + x[eb[1]] * st[1];
         const double d = norm(pa - pb);
-        if (d >= margin_mm || d < 1e-9) continue;
+        if (d >= margin_mm || d < kSamePoint_mm) continue;
         ee_out.push_back({static_cast<int>(k), o, (pa - pb) / d});
       }
     }

@@ -14,6 +14,14 @@
 namespace tp::geometry::internal {
 namespace {
 
+/// A deformation whose largest squared singular value is below this has collapsed to a point.
+constexpr double kZeroStretch = 1e-20;
+
+/// A triangle's second singular value below this share of its first is degenerate (collapsed).
+constexpr double kRelativeSingular = 1e-9;
+/// A strain-limit correction along an edge shorter than this (mm) has no direction.
+constexpr double kZeroLength_mm = 1e-12;
+
 // Runs fn(begin, end) over fixed chunks of [0, n) on the pool; fn must only touch its own range.
 template <class Fn>
 void parallel_ranges(int n, ThreadPool& pool, Fn&& fn) {
@@ -74,7 +82,7 @@ void project_triangle(const RestTriangle& t, const std::vector<double>& w, doubl
   const double tr = a + d, det = a * d - b * b;
   const double disc = std::sqrt(std::max(tr * tr / 4 - det, 0.0));
   const double l1 = tr / 2 + disc, l2 = std::max(tr / 2 - disc, 0.0);
-  if (l1 < 1e-20) return;
+  if (l1 < kZeroStretch) return;
   // The right singular vector, normalised by sqrt (std::hypot, in normalized(Vec2), cost 6 % of a
   // garment's sewing and drape).
   Vec2 v1 = a >= d ? Vec2{1, 0} : Vec2{0, 1};
@@ -85,8 +93,8 @@ void project_triangle(const RestTriangle& t, const std::vector<double>& w, doubl
   const Vec2 v2 = perp(v1);
   const double s1 = std::sqrt(l1), s2 = std::sqrt(l2);
   const Vec3 u1 = (f0 * v1.x + f1 * v1.y) / s1;
-  Vec3 u2 = s2 > 1e-9 * s1 ? (f0 * v2.x + f1 * v2.y) / s2 : Vec3{};
-  if (s2 <= 1e-9 * s1) {
+  Vec3 u2 = s2 > kRelativeSingular * s1 ? (f0 * v2.x + f1 * v2.y) / s2 : Vec3{};
+  if (s2 <= kRelativeSingular * s1) {
     // A collapsed triangle: any direction orthogonal to the stretched one.
     const Vec3 o = std::abs(u1.x) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
     u2 = normalized(cross(cross(u1, o), u1));
@@ -183,7 +191,7 @@ Result<XpbdStats> run_xpbd(ClothModel& cloth, const BodySdf& body, const XpbdPar
         const Vec3 d = x[i] - x[j];
         const double len = norm(d);
         const double wsum = cloth.inv_mass[i] + cloth.inv_mass[j];
-        if (len <= allowed || wsum <= 0 || len < 1e-12) continue;
+        if (len <= allowed || wsum <= 0 || len < kZeroLength_mm) continue;
         const Vec3 corr = d * ((len - allowed) / (len * wsum));
         x[i] -= corr * cloth.inv_mass[i];
         x[j] += corr * cloth.inv_mass[j];
