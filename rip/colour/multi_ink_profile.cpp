@@ -17,6 +17,11 @@ namespace tp::rip {
 
 namespace {
 
+/// A pivot below this makes the fit's system singular.
+constexpr double kSingularPivot = 1e-12;
+/// Two fit errors this close are a tie, broken by the ink order so the choice is deterministic.
+constexpr double kTieSlack = 1e-12;
+
 constexpr int kMaxInks = 15;
 /// Inks of lower chroma than this (CIELAB C*) are achromatic: black (only one is supported).
 constexpr double kAchromaticChroma = 12;
@@ -107,7 +112,7 @@ std::vector<double> solve_bounded(const std::vector<Vec3>& cols, const Vec3& tar
       int piv = c;
       for (int r = c + 1; r < f; ++r)
         if (std::abs(A[r][c]) > std::abs(A[piv][c])) piv = r;
-      if (std::abs(A[piv][c]) < 1e-12) {
+      if (std::abs(A[piv][c]) < kSingularPivot) {
         ok = false;
         break;
       }
@@ -133,7 +138,7 @@ std::vector<double> solve_bounded(const std::vector<Vec3>& cols, const Vec3& tar
     }
     for (double v : a) ink += v;
     // Prefer the closer colour; between equally close ones (within rounding), less ink.
-    if (err < best_err - 1e-12 || (std::abs(err - best_err) <= 1e-12 && ink < best_ink)) {
+    if (err < best_err - kTieSlack || (std::abs(err - best_err) <= kTieSlack && ink < best_ink)) {
       best_err = err;
       best_ink = ink;
       best = a;

@@ -13,6 +13,9 @@ namespace tp::rip {
 
 namespace {
 
+/// Added to the normal equations' diagonal so a flat direction of the model never makes them singular.
+constexpr double kRidge = 1e-9;
+
 using Rgb = std::array<double, 3>;
 
 // Search settings: the forward model is a table interpolated piecewise linearly, so a few steps
@@ -145,7 +148,7 @@ std::vector<Rgb> RgbProfileInverse::device_for(const std::vector<device::Lab>& t
         g[p] = -(j[0][p] * r[0] + j[1][p] * r[1] + j[2][p] * r[2]);
         for (int q = 0; q < 3; ++q) a[p][q] = j[0][p] * j[0][q] + j[1][p] * j[1][q] + j[2][p] * j[2][q];
       }
-      for (int p = 0; p < 3; ++p) a[p][p] += damping[i] * a[p][p] + 1e-9;
+      for (int p = 0; p < 3; ++p) a[p][p] += damping[i] * a[p][p] + kRidge;
       cand[k] = x[i];
       if (solve3(a, g, d))
         for (int c = 0; c < 3; ++c) cand[k][c] = std::clamp(x[i][c] + d[c], 0.0, 1.0);

@@ -1,5 +1,6 @@
 // rip/render/marker_source.cpp: placement culling and pixel -> piece maps for rendering a marker.
 #include "rip/render/marker_source.h"
+#include "geometry/common/tolerances.h"
 
 #include <algorithm>
 #include <cmath>
@@ -49,7 +50,7 @@ Result<std::unique_ptr<MarkerSource>> MarkerSource::create(const geometry::Marke
     if (outline.size() < 3) return fail(ErrorCode::kGeometry, where + ": cut outline has fewer than 3 vertices");
     const geometry::Affine2 to_roll = pl.piece_to_roll();
     if (!std::isfinite(to_roll.a + to_roll.b + to_roll.c + to_roll.d + to_roll.e + to_roll.f) ||
-        std::abs(to_roll.determinant()) < 1e-12)
+        std::abs(to_roll.determinant()) < geometry::kParallelDeterminant)
       return fail(ErrorCode::kGeometry, where + ": placement transform is not finite and invertible");
     geometry::Box2 box;
     for (geometry::Vec2 p : outline) box.add(to_roll.apply(p));
