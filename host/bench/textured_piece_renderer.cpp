@@ -1,6 +1,7 @@
 // host/bench/textured_piece_renderer.cpp: span-based rendering of textured convex pieces (fixed-point
 // bilinear texture steps along each row, per-pixel coverage only near edges).
 #include "host/bench/textured_piece_renderer.h"
+#include "geometry/common/tolerances.h"
 
 #include <algorithm>
 #include <cmath>
@@ -118,7 +119,7 @@ void TexturedPieceRenderer::render(int piece, const geometry::Affine2& m, int wi
       const double base = e.alpha0 + e.gamma * yc;  // distance at i + 0.5 = 0
       auto clip = [&](double threshold, double& lo, double& hi) {
         // base + beta * x >= threshold, x = i + 0.5
-        if (std::abs(e.beta) < 1e-12) {
+        if (std::abs(e.beta) < geometry::kParallelDeterminant) {
           if (base < threshold) lo = hi + 1;
           return;
         }

@@ -20,6 +20,9 @@ namespace tp::host {
 
 namespace {
 
+/// Slack of a ramp's end test and of equal amounts, so a step landing on 1 up to rounding is kept.
+constexpr double kStepSlack = 1e-9;
+
 namespace fs = std::filesystem;
 using internal::fmt;
 
@@ -46,7 +49,7 @@ device::CgatsTable device_chart(const std::vector<std::array<double, 3>>& amount
 
 // Amounts from..1 by step, each kReplicates times, on channel `k` alone.
 void add_ramp(std::vector<std::array<double, 3>>& out, int k, double from, double step) {
-  for (int i = 0; from + i * step <= 1 + 1e-9; ++i)
+  for (int i = 0; from + i * step <= 1 + kStepSlack; ++i)
     for (int r = 0; r < kReplicates; ++r) {
       std::array<double, 3> a{0, 0, 0};
       a[static_cast<size_t>(k)] = std::min(1.0, from + i * step);
@@ -139,7 +142,7 @@ Result<InkCalibrationResult> calibrate_inks(const CalibrateOptions& o, const fs:
     internal::ChartJobExtras extras{{}, r.set};
     for (size_t c : colour) extras.device_inks.push_back(r.inks[c].name);
     std::vector<std::array<double, 3>> amounts;
-    for (int i = 0; kInkLimitFrom + i * kInkLimitStep <= 1 + 1e-9; ++i)
+    for (int i = 0; kInkLimitFrom + i * kInkLimitStep <= 1 + kStepSlack; ++i)
       for (int k = 0; k < kReplicates; ++k) {
         const double a = std::min(1.0, kInkLimitFrom + i * kInkLimitStep);
         amounts.push_back({a, colour.size() > 1 ? a : 0.0, colour.size() > 2 ? a : 0.0});
@@ -156,7 +159,7 @@ Result<InkCalibrationResult> calibrate_inks(const CalibrateOptions& o, const fs:
       if (!same || request <= 0) continue;
       double total = 0;
       for (size_t c : colour) total += rip::evaluate(r.inks[c].linearisation, request);
-      if (!ramp.empty() && std::abs(ramp.back().amount - total) < 1e-9) {
+      if (!ramp.empty() && std::abs(ramp.back().amount - total) < kStepSlack) {
         // A replicate: average it in.
         RampPoint& p = ramp.back();
         p.lab = {(p.lab.l + reading.lab.l) / 2, (p.lab.a + reading.lab.a) / 2, (p.lab.b + reading.lab.b) / 2};

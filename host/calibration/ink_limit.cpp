@@ -7,6 +7,9 @@
 
 namespace tp::host {
 
+/// Added before rounding to whole steps, so an amount that is a step up to rounding counts as it.
+constexpr double kStepSlack = 1e-9;
+
 Result<double> ink_limit_percent(const std::vector<RampPoint>& ramp) {
   if (ramp.size() < 3)
     return fail(ErrorCode::kValidation,
@@ -24,7 +27,7 @@ Result<double> ink_limit_percent(const std::vector<RampPoint>& ramp) {
     total = ramp[i - 1].amount + t * (ramp[i].amount - ramp[i - 1].amount);
     break;
   }
-  return std::max(100.0, std::floor(total * 100 / 5 + 1e-9) * 5);
+  return std::max(100.0, std::floor(total * 100 / 5 + kStepSlack) * 5);
 }
 
 }  // namespace tp::host

@@ -1,5 +1,6 @@
 // host/pipeline/order_reprojection.cpp: body-relative re-projection of design layers between sizes.
 #include "host/pipeline/order_reprojection.h"
+#include "geometry/common/tolerances.h"
 
 #include <algorithm>
 #include <cmath>
@@ -100,7 +101,7 @@ std::vector<Vec3> SizeMapping::map_stroke(const std::vector<Vec3>& pts) const {
     const geometry::TorsoSection st = geometry::dress_form_section(target_, y);
     const SectionPoint q = to_section(sb, p.x, p.z);
     const SectionPoint qa = to_section(sb, a.x, a.z);
-    if (q.rho < 1e-9 || qa.rho < 1e-9) {
+    if (q.rho < geometry::kSamePoint_mm || qa.rho < geometry::kSamePoint_mm) {
       out.push_back(map_point(p));
       continue;
     }
@@ -156,7 +157,7 @@ Vec3 SizeMapping::map_point(const Vec3& p) const {
     const auto [x, z] = from_section(st, q.u, q.v);
     return {x, y, z};
   }
-  if (q.rho < 1e-9) {
+  if (q.rho < geometry::kSamePoint_mm) {
     const auto [x, z] = from_section(st, 0, 0);
     return {x + p.x, y, z + (p.z - sb.centre_z_mm)};
   }

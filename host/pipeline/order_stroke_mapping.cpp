@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "geometry/common/tolerances.h"
 #include "geometry/design/transfer_surface_points.h"
 
 namespace tp::host {
@@ -47,7 +48,7 @@ std::vector<double> mean_value_coordinates(const std::vector<Vec2>& v, Vec2 q) {
   for (size_t i = 0; i < n; ++i) {
     d[i] = v[i] - q;
     r[i] = norm(d[i]);
-    if (r[i] < 1e-9) {
+    if (r[i] < geometry::kSamePoint_mm) {
       w[i] = 1;
       return w;
     }
@@ -56,7 +57,7 @@ std::vector<double> mean_value_coordinates(const std::vector<Vec2>& v, Vec2 q) {
   for (size_t i = 0; i < n; ++i) {
     const size_t j = (i + 1) % n;
     const double c = cross(d[i], d[j]), dt = dot(d[i], d[j]);
-    if (std::abs(c) < 1e-9 * r[i] * r[j] && dt < 0) {
+    if (std::abs(c) < geometry::kBoundarySlack * r[i] * r[j] && dt < 0) {
       // q on edge (i, j): the two end points alone.
       std::fill(w.begin(), w.end(), 0.0);
       const double t = r[i] / (r[i] + r[j]);
