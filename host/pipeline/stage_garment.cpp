@@ -185,7 +185,7 @@ Status stage_garment(PipelineState& ps) {
     ps.garment_is_3d = true;
     ps.report["sewing"] = {{"solver", solver},
                            {"solver_asked", ps.job.garment.sewing},
-                           {"levels", opt.coarse_factor == 0 || solver == "arap" ? 1 : 2},
+                           {"levels", stats.levels},
                            {"sewing_iterations", stats.sewing_iterations},
                            {"relax_iterations", stats.relax_iterations},
                            {"contacts", stats.contacts},
