@@ -214,8 +214,12 @@ TEST_F(StudioRoutes, ANewerPreviewSupersedesTheOneStillRunning) {
         {{"type", "stroke"}, {"points", points}, {"radius", 25}, {"colour", {255, 0, 0, 255}}, {"hardness", 0.5}});
   }
   const std::string heavy = json{{"design", {{"layers", layers}}}}.dump();
-  // Alone it is rendered (1.5 s on two idle cores).
+  // Alone it is rendered (1.5 s on two idle cores). It is timed the second time: the first also
+  // prepares what the garment's session keeps for every later preview.
   auto c = daemon_->client();
+  auto warm = c.Post(url("preview"), heavy, "application/json");
+  ASSERT_TRUE(warm);
+  ASSERT_EQ(warm->status, 200) << warm->body;
   const auto t0 = std::chrono::steady_clock::now();
   auto alone = c.Post(url("preview"), heavy, "application/json");
   ASSERT_TRUE(alone);
@@ -230,7 +234,7 @@ TEST_F(StudioRoutes, ANewerPreviewSupersedesTheOneStillRunning) {
     older_body = r->body;
     older_header = r->get_header_value("X-Preview-Superseded");
   });
-  std::this_thread::sleep_for(std::chrono::milliseconds(static_cast<int>(std::clamp(alone_ms / 3, 300.0, 2000.0))));
+  std::this_thread::sleep_for(std::chrono::milliseconds(static_cast<int>(std::clamp(alone_ms / 3, 20.0, 2000.0))));
   auto newer = c.Post(url("preview"), R"({"layers": []})", "application/json");
   first.join();
   ASSERT_TRUE(newer);
@@ -456,23 +460,28 @@ TEST_F(StudioRoutes, SewsAnUploadedGarmentCodePatternOnItsBodyAndPreviewsIt) {
   c.Delete("/api/v1/studio/garments/" + g["id"].get<std::string>());
 }
 
-// GarmentCode's shirt_mean on the same body tangles at the studio's mesh edge: the upload is
-// refused with a 422 that names the failed garment check, and nothing is kept.
+// The GarmentCode 2021 dataset's straight trousers on their SMPL body (T-pose) start with the legs
+// between their sides and stay open at the studio's mesh edge: the upload is refused with a 422
+// that names the failed garment check and its limit, and nothing is kept.
 TEST_F(StudioRoutes, RefusesAnUploadThatFailsTheGarmentChecksNamingTheCheck) {
-  const fs::path data = shared_data_dir() / "garmentcode";
-  const fs::path spec = data / "patterns/shirt_mean_specification.json", body = data / "bodies/mean_female.obj";
+  const fs::path data = shared_data_dir() / "garmentcode-2021";
+  const fs::path spec = data / "pants_straight_sides.json", body = data / "f_smpl_template.obj";
   if (!fs::exists(spec) || !fs::exists(body)) GTEST_SKIP() << data << " is not on this machine";
   auto c = daemon_->client();
-  auto r = c.Post("/api/v1/studio/garments",
-                  httplib::MultipartFormDataItems{{"pattern", slurp(spec), "shirt_mean.json", "application/json"},
-                                                  {"body", slurp(body), "mean_female.obj", "text/plain"},
-                                                  {"body_units", "m", "", ""}});
+  auto r =
+      c.Post("/api/v1/studio/garments",
+             httplib::MultipartFormDataItems{{"pattern", slurp(spec), "pants_straight_sides.json", "application/json"},
+                                             {"body", slurp(body), "f_smpl_template.obj", "text/plain"},
+                                             {"body_units", "m", "", ""}});
   ASSERT_TRUE(r);
   ASSERT_EQ(r->status, 422) << r->body.substr(0, 400);
   const json e = json::parse(r->body);
   const std::string message = e["problems"][0]["message"].get<std::string>();
   EXPECT_NE(message.find("garment checks failed"), std::string::npos) << message;
-  EXPECT_NE(message.find("self-intersecting"), std::string::npos) << message;
+  const bool names_a_check = message.find("stitch gap") != std::string::npos ||
+                             message.find("self-intersecting") != std::string::npos ||
+                             message.find("inside the body") != std::string::npos;
+  EXPECT_TRUE(names_a_check) << message;
   EXPECT_NE(message.find("limit"), std::string::npos) << message;
 }
 
