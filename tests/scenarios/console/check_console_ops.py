@@ -21,12 +21,7 @@ def main():
     from selenium.webdriver.support.ui import WebDriverWait
 
     root = tempfile.mkdtemp(prefix="tp-console-ops-")
-    failures = []
-
-    def check(ok, what):
-        print(f"{'ok' if ok else 'FAIL'}: {what}")
-        if not ok:
-            failures.append(what)
+    check = h.Checks()
 
     # The printer's head cover opens for 3 s as a swath is about to print: the panel must show it.
     daemon = h.Daemon(root, printer="sim", scenario='{"description": "cover open", "faults": '
@@ -212,11 +207,7 @@ def main():
         if driver:
             driver.quit()
         daemon.stop()
-    if failures:
-        print(f"printd log: {daemon.log_path}")
-        return 1
-    h.cleanup(root)
-    return 0
+    return h.finish(check, root, daemon)
 
 
 if __name__ == "__main__":

@@ -17,12 +17,7 @@ import console_harness as h
 
 def main():
     root = tempfile.mkdtemp(prefix="tp-printctl-console-")
-    failures = []
-
-    def check(ok, what):
-        print(f"{'ok' if ok else 'FAIL'}: {what}")
-        if not ok:
-            failures.append(what)
+    check = h.Checks()
 
     out = os.path.join(root, "out")
     cmd = [os.path.join(h.BIN, "printctl"), "console", "--out", out, "--port", "0", "--example",
@@ -64,11 +59,7 @@ def main():
         if proc.poll() is None:
             os.killpg(proc.pid, signal.SIGKILL)
             proc.wait()
-    if failures:
-        print("".join(lines[-20:]))
-        return 1
-    h.cleanup(root)
-    return 0
+    return h.finish(check, root, log_text="".join(lines[-20:]))
 
 
 if __name__ == "__main__":

@@ -125,3 +125,28 @@ def severe_logs(driver):
 
 def cleanup(path):
     shutil.rmtree(path, ignore_errors=True)
+
+
+class Checks:
+    """The named checks of one test: each prints ok or FAIL with what it checks; failures lists the failed ones."""
+
+    def __init__(self):
+        self.failures = []
+
+    def __call__(self, ok, what):
+        print(f"{'ok' if ok else 'FAIL'}: {what}")
+        if not ok:
+            self.failures.append(what)
+
+
+def finish(checks, root, daemon=None, log_text=None):
+    """The test's exit code: 1 when a check failed (printd's log or `log_text` named, `root` kept to look at), else 0
+    with `root` removed."""
+    if checks.failures:
+        if daemon:
+            print(f"printd log: {daemon.log_path}")
+        if log_text:
+            print(log_text)
+        return 1
+    cleanup(root)
+    return 0

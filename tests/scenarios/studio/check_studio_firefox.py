@@ -35,12 +35,7 @@ def main():
         print(f"SKIP: {marionette.FIREFOX} is missing (apt-get install firefox-esr)")
         return h.SKIP
     root = tempfile.mkdtemp(prefix="tp-studio-ff-")
-    failures = []
-
-    def check(ok, what):
-        print(f"{'ok' if ok else 'FAIL'}: {what}")
-        if not ok:
-            failures.append(what)
+    check = h.Checks()
 
     daemon = h.Daemon(root, printer="none")
     ff = None
@@ -89,11 +84,7 @@ def main():
         if ff:
             ff.quit()
         daemon.stop()
-    if failures:
-        print(f"printd log: {daemon.log_path}")
-        return 1
-    h.cleanup(root)
-    return 0
+    return h.finish(check, root, daemon)
 
 
 if __name__ == "__main__":
