@@ -12,6 +12,8 @@ Result<JobGarment> sew_job_garment(const Job& job, const std::filesystem::path& 
   if (ec) return fail(ErrorCode::kIo, out_dir.string() + ": " + ec.message());
   RunOptions options;
   options.out_dir = out_dir;
+  // Nothing is printed here, so the printer is not asked who it is (intake's preflight).
+  options.printer_override = PrinterChoice::kNone;
   JobGarment out;
   internal::PipelineState ps{job, options, cancel, out.report};
   using StageFn = Status (*)(internal::PipelineState&);
