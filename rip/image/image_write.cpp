@@ -137,18 +137,8 @@ Status write_png(const std::filesystem::path& path, const geometry::ImageRgba8& 
                  double dpi) {
   if (auto ok = check_size(path, image); !ok) return ok;
   const int nch = channels == PngChannels::kRgba ? 4 : 3;
-  OIIO::ImageSpec spec(image.width_px, image.height_px, nch, OIIO::TypeDesc::UINT8);
-  spec.attribute("oiio:ColorSpace", "sRGB");
-  // pHYs: OIIO converts inches to the chunk's pixels per metre; without a unit, only the aspect.
-  const float res = dpi > 0 ? static_cast<float>(dpi) : 1.0f;
-  spec.attribute("XResolution", res);
-  spec.attribute("YResolution", res);
-  if (dpi > 0) spec.attribute("ResolutionUnit", "inch");
-  if (nch == 4) {
-    // Our pixels carry straight alpha; without this OIIO would un-premultiply them once more.
-    spec.attribute("oiio:UnassociatedAlpha", 1);
-    return write_whole(path, spec, reinterpret_cast<const std::uint8_t*>(image.pixels.data()));
-  }
+  const OIIO::ImageSpec spec = png_spec(image, nch, dpi);
+  if (nch == 4) return write_whole(path, spec, reinterpret_cast<const std::uint8_t*>(image.pixels.data()));
   return write_whole(path, spec, over_white(image).data());
 }
 
