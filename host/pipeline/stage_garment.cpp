@@ -24,6 +24,7 @@
 #include "host/pipeline/garment_files.h"
 #include "host/pipeline/internal/pipeline_state.h"
 #include "host/pipeline/internal/plan_steps.h"
+#include "host/pipeline/sewing_choice.h"
 
 namespace tp::host::internal {
 
@@ -73,22 +74,10 @@ bool garmentcode_pattern(const GarmentSpec& g) {
   return format && *format == geometry::PatternFormat::kGarmentCode;
 }
 
-// The sewing solver of a job: its `garment.sewing`, or for "auto" XPBD when a piece comes without
-// a 3D placement (FreeSewing, DXF, native without one: pieces placed by role) or the pattern is
-// GarmentCode's, ARAP otherwise (the samples, native patterns placed for the dress form). XPBD has
-// contact and self-collision from the start; ARAP folds those patterns' slack through itself but
-// sews the samples (XPBD leaves the sample dress's side seam open). docs/garments.md has the
-// figures behind the rule.
-// Whether a piece of the pattern comes without a 3D placement (placed by its role).
-bool placed_by_role(const geometry::Pattern& pattern) {
-  for (const geometry::Piece& p : pattern.pieces)
-    if (!p.placement) return true;
-  return false;
-}
-
+// The sewing solver of a job: its `garment.sewing`, or the one "auto" picks (sewing_choice.h).
 std::string sewing_solver(const GarmentSpec& g, const geometry::Pattern& pattern) {
   if (g.sewing != "auto") return g.sewing;
-  return placed_by_role(pattern) || garmentcode_pattern(g) ? "xpbd" : "arap";
+  return auto_sewing(pattern, garmentcode_pattern(g)).solver == geometry::SewSolver::kXpbd ? "xpbd" : "arap";
 }
 
 // The garment stage's progress: a solver's own fraction mapped into [from, to] of the stage,
@@ -161,9 +150,8 @@ Status stage_garment(PipelineState& ps) {
     opt.target_edge_mm = ps.job.garment.mesh_edge_mm;
     const std::string solver = sewing_solver(ps.job.garment, part.pattern);
     opt.solver = solver == "xpbd" ? geometry::SewSolver::kXpbd : geometry::SewSolver::kArap;
-    // "auto" sews pieces placed by role on one level: the coarse level's shape, carried over to the
-    // fine mesh, left bella 42's bodice hem 48 vertices (0.48 %) inside the form; one level, none.
-    if (ps.job.garment.sewing == "auto" && solver == "xpbd" && placed_by_role(part.pattern)) opt.coarse_factor = 0;
+    if (ps.job.garment.sewing == "auto" && auto_sewing(part.pattern, garmentcode_pattern(ps.job.garment)).one_level)
+      opt.coarse_factor = 0;
     opt.on_progress = garment_progress(ps, 0.0, ps.job.garment.drape ? 0.5 : 1.0, "sewing");
     // Where the pieces start (the solver places them the same way): inside the body as placed,
     // and after the push out of it.

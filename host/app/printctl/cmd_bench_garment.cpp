@@ -7,6 +7,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <map>
 #include <optional>
 #include <string>
@@ -32,6 +34,7 @@
 #include "host/app/printctl/commands.h"
 #include "host/pipeline/garment_checks.h"
 #include "host/pipeline/garment_files.h"
+#include "host/pipeline/sewing_choice.h"
 
 namespace tp::host::cli {
 namespace {
@@ -49,6 +52,7 @@ struct BenchGarmentArgs {
   std::vector<std::string> corpus;  ///< folders whose every pattern is benched on its body
   double min_score = geometry::SuggestOptions{}.min_score;  ///< suggestions for patterns without stitches
   geometry::SewOptions sew;  ///< solver settings other than mesh size and threads
+  bool solver_auto = true;   ///< no --solver: the one a job's garment.sewing "auto" picks
   geometry::FitLimits limits;
   std::string material = "cotton-poplin";  ///< drape fabric preset
   bool drape = true;
@@ -100,7 +104,7 @@ std::string seam_lines(const geometry::Pattern& pattern, const geometry::Distort
 // without stitches gets the suggested ones; one placed around another body is aligned first.
 // Failures of one pattern print `error=` and count, so a corpus run goes on.
 void bench_one(const std::string& name, geometry::Pattern pattern, const geometry::BodySdf& body,
-               const BenchGarmentArgs& a, Tally& tally) {
+               const BenchGarmentArgs& a, Tally& tally, bool garmentcode) {
   ++tally.patterns;
   auto error_line = [&](const std::string& why) {
     ++tally.errors;
@@ -119,6 +123,12 @@ void bench_one(const std::string& name, geometry::Pattern pattern, const geometr
   const std::vector<int> flat = geometry::unjoined_pieces(pattern);
   const auto t0 = std::chrono::steady_clock::now();
   geometry::SewOptions o = a.sew;
+  if (a.solver_auto) {
+    // As a job with garment.sewing "auto" sews this pattern.
+    const SewingChoice choice = auto_sewing(pattern, garmentcode);
+    o.solver = choice.solver;
+    if (choice.one_level && a.sew.coarse_factor < 0) o.coarse_factor = 0;
+  }
   o.target_edge_mm = geometry::target_edge_for_vertex_count(pattern, a.vertices);
   o.threads = a.threads;
   geometry::SewStats stats;
@@ -197,21 +207,30 @@ void bench_one(const std::string& name, geometry::Pattern pattern, const geometr
   std::string failed;
   for (const auto& f : fit.failures) failed += (failed.empty() ? "" : ",") + f.check;
   std::printf(
-      "garment=%s vertices=%d stitches=%zu suggested=%d stitch_gap_max_mm=%.2f stitch_gap_p95_mm=%.2f "
+      "garment=%s solver=%s levels=%d vertices=%d stitches=%zu suggested=%d stitch_gap_max_mm=%.2f "
+      "stitch_gap_p95_mm=%.2f "
       "self_intersections=%d inside_body=%d min_clearance_mm=%.1f body_distance_p50_mm=%.1f body_distance_p95_mm=%.1f "
       "off_body=%.4f "
       "unsewn=%zu start_inside=%d start_inside_pushed=%d start_max_push_mm=%.1f "
       "strain_mean=%.4f strain_p95=%.4f seam_len_diff_max=%.4f aligned=%s seconds=%.2f drape_seconds=%.2f "
       "drape_self_intersections=%d drape_inside_body=%d drape_strain_p95=%.4f "
       "gathered_fraction=%.3f checks=%s%s%s\n",
-      name.c_str(), r.vertices, pattern.stitches.size(), suggested, fit.stitch_gap_max_mm, fit.stitch_gap_p95_mm,
-      fit.self_intersections, fit.inside_body, r.min_clearance_mm, fit.body_distance_p50_mm, fit.body_distance_p95_mm,
-      fit.off_body, fit.unsewn_pieces.size(), start.inside_before, start.inside_after, start.max_push_mm, r.strain_mean,
-      r.strain_p95, r.seam_len_diff_max, aligned ? "yes" : "no", seconds, drape_seconds, drape_self, drape_inside,
-      drape_strain_p95, gathered_fraction(r), fit.pass ? "pass" : "fail",
-      failed.empty() ? "" : " failed=", failed.c_str());
+      name.c_str(), o.solver == geometry::SewSolver::kXpbd ? "xpbd" : "arap", stats.levels, r.vertices,
+      pattern.stitches.size(), suggested, fit.stitch_gap_max_mm, fit.stitch_gap_p95_mm, fit.self_intersections,
+      fit.inside_body, r.min_clearance_mm, fit.body_distance_p50_mm, fit.body_distance_p95_mm, fit.off_body,
+      fit.unsewn_pieces.size(), start.inside_before, start.inside_after, start.max_push_mm, r.strain_mean, r.strain_p95,
+      r.seam_len_diff_max, aligned ? "yes" : "no", seconds, drape_seconds, drape_self, drape_inside, drape_strain_p95,
+      gathered_fraction(r), fit.pass ? "pass" : "fail", failed.empty() ? "" : " failed=", failed.c_str());
   for (const auto& f : fit.failures) std::printf("  %s: %s (look at %s_%s.png)\n", f.check.c_str(), f.message.c_str(), name.c_str(), f.view.c_str());
   std::fflush(stdout);
+}
+
+// Whether the pattern file is a GarmentCode specification (by its content, as jobs detect it).
+bool is_garmentcode_file(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  auto format = geometry::detect_pattern_format(path.filename().string(), text);
+  return format && *format == geometry::PatternFormat::kGarmentCode;
 }
 
 geometry::Pattern load_pattern(const std::string& path) {
@@ -247,7 +266,7 @@ void run_corpus(const BenchGarmentArgs& a) {
         std::printf("garment=%s checks=error error=\"%s\"\n", e.name.c_str(), p.error().what().c_str());
         continue;
       }
-      bench_one(e.name, std::move(*p), *e.body, a, tally);
+      bench_one(e.name, std::move(*p), *e.body, a, tally, is_garmentcode_file(e.pattern));
     }
     std::printf("corpus=%s patterns=%d pass=%d fail=%d errors=%d\n", dir.c_str(), tally.patterns, tally.pass, tally.fail,
                 tally.errors);
@@ -261,7 +280,8 @@ void run_bench_garment(const BenchGarmentArgs& a) {
   if (!a.pattern.empty()) {
     if (a.body.empty()) die("--pattern needs --body", 2);
     auto body = load_body(a.body, a.body_mm_per_unit);
-    bench_one(std::filesystem::path(a.pattern).stem().string(), load_pattern(a.pattern), *body, a, tally);
+    bench_one(std::filesystem::path(a.pattern).stem().string(), load_pattern(a.pattern), *body, a, tally,
+              is_garmentcode_file(a.pattern));
     return;
   }
   auto m = geometry::samples::parse_size(a.size);
@@ -272,7 +292,7 @@ void run_bench_garment(const BenchGarmentArgs& a) {
   for (const std::string& name : names) {
     auto p = geometry::samples::draft_garment(name, *m, a.size);
     if (!p) die(p.error().what(), 2);
-    bench_one(name, std::move(*p), **body, a, tally);
+    bench_one(name, std::move(*p), **body, a, tally, false);
   }
   if (!a.garment.empty() || a.data.empty()) return;
   // The GarmentCode references on their average female body (reference data: only when asked).
@@ -282,7 +302,7 @@ void run_bench_garment(const BenchGarmentArgs& a) {
     auto path = data / "garmentcode/patterns" / (std::string(spec) + "_specification.json");
     auto p = geometry::load_garmentcode(path);
     if (!p) die(p.error().what(), 2);
-    bench_one(spec, std::move(*p), *mean_female, a, tally);
+    bench_one(spec, std::move(*p), *mean_female, a, tally, true);
   }
 }
 
@@ -308,9 +328,13 @@ void register_bench_garment(CLI::App& bench) {
       ->check(CLI::Range(0.0, 1e6));
   cmd->add_option("--gravity", args->sew.gravity_per_mm, "weight per area relative to membrane stiffness")
       ->check(CLI::Range(0.0, 1.0));
-  cmd->add_option("--solver", args->sew.solver, "sewing solver: arap (springs) or xpbd (cloth with self-collision)")
-      ->transform(CLI::CheckedTransformer(std::map<std::string, geometry::SewSolver>{
-          {"arap", geometry::SewSolver::kArap}, {"xpbd", geometry::SewSolver::kXpbd}}));
+  CLI::Option* solver =
+      cmd->add_option(
+             "--solver", args->sew.solver,
+             "sewing solver: arap (springs) or xpbd (cloth with self-collision); default: what a job's garment.sewing "
+             "\"auto\" picks for each pattern (docs/job-format.md)")
+          ->transform(CLI::CheckedTransformer(std::map<std::string, geometry::SewSolver>{
+              {"arap", geometry::SewSolver::kArap}, {"xpbd", geometry::SewSolver::kXpbd}}));
   cmd->add_option("--xpbd-close-speed", args->sew.xpbd_close_mm_s, "XPBD sewing: seam closing speed (mm/s)")
       ->check(CLI::Range(1.0, 10000.0));
   cmd->add_option("--xpbd-duration", args->sew.xpbd_duration_s, "XPBD sewing: simulated time limit (s)")
@@ -336,7 +360,10 @@ void register_bench_garment(CLI::App& bench) {
   cmd->add_option("--out", args->out, "also write each garment's OBJ, body OBJ, previews and seam lengths into this folder");
   cmd->add_option("--data", args->data,
                   "reference data folder: also bench its GarmentCode references (e.g. ../shared/data)");
-  cmd->callback([args] { run_bench_garment(*args); });
+  cmd->callback([args, solver] {
+    args->solver_auto = solver->count() == 0;
+    run_bench_garment(*args);
+  });
 }
 
 }  // namespace tp::host::cli
