@@ -73,10 +73,18 @@ def main():
         check(layer is not None and hit is not None and
               all(abs(layer["centre"][i] - hit["point"][i]) < 1 for i in range(3)),
               "the planar layer is centred on the clicked surface point")
-        time.sleep(0.3)  # the next animation frame draws the new texture
-        placed = h.read_png(ff.element_png(".st-canvas"))
+        # The newest preview is drawn on a later animation frame, and under load the page may still
+        # be sending the click's own preview after the one for the added layer: look until the
+        # newest applied preview shows the image at the click (15 s at most).
         lx, ly = int((cx - rect["x"]) * scale), int((cy - rect["y"]) * scale)
-        here = region_change(before, placed, lx, ly, int(25 * scale))
+        deadline = time.time() + 15
+        while True:
+            time.sleep(0.3)
+            ff.wait(PREVIEW_DONE, 60, 0)
+            placed = h.read_png(ff.element_png(".st-canvas"))
+            here = region_change(before, placed, lx, ly, int(25 * scale))
+            if here > 8 or time.time() > deadline:
+                break
         corner = region_change(before, placed, int(15 * scale), int(15 * scale), int(10 * scale))
         print(f"planar_change_at_click={here:.1f} planar_change_in_corner={corner:.1f}")
         check(here > 8 and corner < 1, "the preview changed at the click and not in the corner")
