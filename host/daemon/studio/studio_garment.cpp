@@ -6,9 +6,11 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <condition_variable>
 #include <fstream>
+#include <list>
 #include <mutex>
 #include <sstream>
 #include <thread>
@@ -62,31 +64,33 @@ StudioGarment::~StudioGarment() {
 
 namespace {
 
-// The background sewings running now: counted so that printd can wait for them before it exits
-// (their threads use the process's thread pool and logger, which static destruction takes down).
+// The background sewings: their threads, owned here and joined (finished ones when the next begins,
+// all of them by wait_for_print_sewings before printd exits, since they use the process's thread
+// pool and logger, which static destruction takes down).
 struct PrintSewings {
+  struct Running {
+    std::thread thread;
+    std::shared_ptr<std::atomic<bool>> ended;  ///< set by the thread as its last step
+  };
   std::mutex mu;
-  std::condition_variable ended;
-  int running = 0;
+  std::list<Running> threads;
 };
 PrintSewings& print_sewings() {
-  static PrintSewings* s = new PrintSewings;  // never destroyed: a detached thread may still signal it
+  // Never destroyed: at exit a joinable std::thread's destructor would terminate the process.
+  static PrintSewings* s = new PrintSewings;
   return *s;
 }
-bool try_begin_print_sewing(int at_most) {
-  PrintSewings& s = print_sewings();
-  std::lock_guard lock(s.mu);
-  if (s.running >= at_most) return false;
-  ++s.running;
-  return true;
-}
-void end_print_sewing() {
-  PrintSewings& s = print_sewings();
-  {
-    std::lock_guard lock(s.mu);
-    --s.running;
+// Joins the sewings that have ended and says how many still run. Call with s.mu held.
+std::size_t reap_ended(PrintSewings& s) {
+  for (auto it = s.threads.begin(); it != s.threads.end();) {
+    if (it->ended->load()) {
+      it->thread.join();  // it has set its flag, so it is returning
+      it = s.threads.erase(it);
+    } else {
+      ++it;
+    }
   }
-  s.ended.notify_all();
+  return s.threads.size();
 }
 constexpr int kPrintSewingsAtOnce = 2;
 constexpr int kPrintSewingNice = 10;
@@ -97,16 +101,16 @@ void start_print_garment(StudioGarment& g, const PackageLimits& limits) {
   json section = g.print_garment_section;
   section["drape"] = false;
   if (section == g.garment_section || g.print_sewing) return;
-  if (!try_begin_print_sewing(kPrintSewingsAtOnce)) return;
+  PrintSewings& sewings = print_sewings();
+  std::lock_guard sewings_lock(sewings.mu);
+  if (reap_ended(sewings) >= kPrintSewingsAtOnce) return;
   auto job = parse_studio_job(g, studio_manifest(g, {{"garment", section}}, true), limits);
-  if (!job) {
-    end_print_sewing();
-    return;  // a save reports the same error when it sews
-  }
+  if (!job) return;  // a save reports the same error when it sews
   auto state = std::make_shared<PrintGarmentSewing>();
   state->section = section;
   g.print_sewing = state;
-  std::thread([state, job = std::move(*job), dir = g.dir, id = g.id] {
+  auto ended = std::make_shared<std::atomic<bool>>(false);
+  std::thread thread([state, ended, job = std::move(*job), dir = g.dir, id = g.id] {
     // Nice applies per thread on Linux, and the sewing's worker threads inherit it.
     ::setpriority(PRIO_PROCESS, static_cast<id_t>(::gettid()), kPrintSewingNice);
     const auto t0 = std::chrono::steady_clock::now();
@@ -130,14 +134,19 @@ void start_print_garment(StudioGarment& g, const PackageLimits& limits) {
     } else {
       spdlog::info("printd: studio garment {}: the print garment sewn in the background in {:.1f} s", id, s);
     }
-    end_print_sewing();
-  }).detach();
+    ended->store(true);
+  });
+  sewings.threads.push_back({std::move(thread), std::move(ended)});
 }
 
 void wait_for_print_sewings() {
   PrintSewings& s = print_sewings();
-  std::unique_lock lock(s.mu);
-  s.ended.wait(lock, [&] { return s.running == 0; });
+  std::list<PrintSewings::Running> threads;
+  {
+    std::lock_guard lock(s.mu);
+    threads.swap(s.threads);
+  }
+  for (auto& r : threads) r.thread.join();
 }
 
 Result<std::shared_ptr<const JobGarment>> await_print_garment(StudioGarment& g, const json& section) {

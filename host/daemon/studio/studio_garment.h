@@ -113,7 +113,7 @@ struct StudioGarment {
 /// is parsed here, so call it with g.mu held or before g is shared.
 void start_print_garment(StudioGarment& g, const PackageLimits& limits);
 
-/// Waits until every background sewing start_print_garment began has ended. Their garments'
+/// Joins every background sewing start_print_garment began (waiting for each to end). Their garments'
 /// destructors cancel them, so destroy (or cancel) the garments first; printd calls this before
 /// it exits, since those threads use the process's thread pool and logger.
 void wait_for_print_sewings();
