@@ -31,10 +31,6 @@ Status check_printer(const device::PrinterModel& model, const device::IdentifyMs
 
 Result<PrinterPreflight> preflight_printer(PrinterChoice printer, const device::PrinterModel& model) {
   PrinterPreflight out;
-  if (printer == PrinterChoice::kNone) {
-    out.note = "printer 'none'";
-    return out;
-  }
   PrinterConfig cfg;
   cfg.printer = printer;
   cfg.use_gpio = false;  // a handshake only: the cutting table's lines stay with the print stage

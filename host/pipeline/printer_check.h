@@ -20,7 +20,7 @@ struct PrinterPreflight {
   std::string note;      ///< why it could not be asked, when it was not reached
 };
 
-/// Asks the printer `printer` (kSim or kUsb; kNone is never opened) who it is, briefly and
+/// Asks the printer `printer` (kSim or kUsb: the caller skips kNone) who it is, briefly and
 /// without GPIO or a job, and checks it against `model`, so that a job planned for another
 /// printer fails before its garment, design and RIP stages rather than after them. A printer
 /// that cannot be reached now is not an error here: the print stage waits for it and fails with
