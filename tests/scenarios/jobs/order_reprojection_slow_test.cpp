@@ -235,6 +235,9 @@ TEST_P(OrderReprojection, MotifStrokeAndStripeKeepTheirPlaceInEverySize) {
         sample.c_str(), size.c_str(), err, d.area_mm2, ratio,
         motif.contains("landmark_error_mm") ? motif["landmark_error_mm"].dump().c_str() : "-");
     EXPECT_LT(err, 3.0) << sample << " " << size;
+    // ... and that place is the same body landmark (bust or hip point) at the same offset.
+    ASSERT_TRUE(motif.contains("landmark_error_mm")) << sample << " " << size;
+    EXPECT_LT(motif["landmark_error_mm"].get<double>(), 3.0) << sample << " " << size;
     EXPECT_NEAR(ratio, 1.0, 0.005) << sample << " " << size;
     // The stripe: its axis stays on the body axis (x = z = 0) and its tile in mm.
     const auto& stripe = layers[0];
