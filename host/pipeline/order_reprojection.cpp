@@ -176,10 +176,22 @@ double SizeMapping::girth_ratio(double y) const {
   return gb > 0 ? gt / gb : 1;
 }
 
-Vec3 centre_front_bust_point(const geometry::BodyMeasurements& m) {
-  const double y = geometry::dress_form_landmarks(m).bust_y;
+namespace {
+
+// The centre-front surface point of the torso section at height y.
+Vec3 centre_front_point(const geometry::BodyMeasurements& m, double y) {
   const geometry::TorsoSection s = geometry::dress_form_section(m, y);
   return {0, y, s.centre_z_mm + s.front_mm};
+}
+
+}  // namespace
+
+Vec3 centre_front_bust_point(const geometry::BodyMeasurements& m) {
+  return centre_front_point(m, geometry::dress_form_landmarks(m).bust_y);
+}
+
+Vec3 centre_front_hip_point(const geometry::BodyMeasurements& m) {
+  return centre_front_point(m, geometry::dress_form_landmarks(m).hip_y);
 }
 
 std::vector<DesignLayerSpec> reproject_layers(const std::vector<DesignLayerSpec>& layers, const SizeMapping& map) {

@@ -44,6 +44,9 @@ class SizeMapping {
 /// The centre-front bust point (on the surface, the base of "a motif at the bust point").
 [[nodiscard]] geometry::Vec3 centre_front_bust_point(const geometry::BodyMeasurements& m);
 
+/// The centre-front hip point (on the surface at the hip line: a skirt's front motif).
+[[nodiscard]] geometry::Vec3 centre_front_hip_point(const geometry::BodyMeasurements& m);
+
 /// The job's layers mapped onto the target size: planar and text centres, cylinder axes and
 /// stroke points through `map`; sizes kept in mm (body) or scaled by the girth ratio (graded).
 [[nodiscard]] std::vector<DesignLayerSpec> reproject_layers(const std::vector<DesignLayerSpec>& layers,

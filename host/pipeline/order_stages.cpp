@@ -2,6 +2,7 @@
 // size drafted, meshed and sewn once, the design re-projected from the base size, one renderer
 // per copy (its text and labels), and all pieces merged into one pattern for the marker.
 #include <cctype>
+#include <cmath>
 
 #include "geometry/continuity/continuity.h"
 #include "host/pipeline/internal/order_run.h"
@@ -60,15 +61,20 @@ nlohmann::json reprojection_json(const std::vector<DesignLayerSpec>& base_layers
       e["size_ratio"] =
           b.type == "planar" ? (b.width_mm > 0 ? l.width_mm / b.width_mm : 1.0) : l.text_size_mm / b.text_size_mm;
       if (map && b.normal[2] > 0.5) {
-        // Front-facing layers against the centre-front bust point: the landmark check holds in
-        // placement "body"; in "graded" the offset scales.
-        const geometry::Vec3 bb = centre_front_bust_point(map->base_measurements());
-        const geometry::Vec3 tb = centre_front_bust_point(map->target_measurements());
+        // Front-facing layers against the nearer (in height) of the centre-front bust and hip
+        // points: the landmark check holds in placement "body"; in "graded" the offset scales.
+        const geometry::Vec3 base_bust = centre_front_bust_point(map->base_measurements());
+        const geometry::Vec3 base_hip = centre_front_hip_point(map->base_measurements());
+        const bool hip = std::abs(b.centre_mm[1] - base_hip.y) < std::abs(b.centre_mm[1] - base_bust.y);
+        const geometry::Vec3 bb = hip ? base_hip : base_bust;
+        const geometry::Vec3 tb = hip ? centre_front_hip_point(map->target_measurements())
+                                      : centre_front_bust_point(map->target_measurements());
         const geometry::Vec3 off{b.centre_mm[0] - bb.x, b.centre_mm[1] - bb.y, b.centre_mm[2] - bb.z};
         const geometry::Vec3 want = tb + off;
         const geometry::Vec3 got{l.centre_mm[0], l.centre_mm[1], l.centre_mm[2]};
-        e["bust_point_mm"] = {tb.x, tb.y, tb.z};
-        e["offset_from_bust_point_mm"] = {off.x, off.y, off.z};
+        e["landmark"] = hip ? "centre-front hip point" : "centre-front bust point";
+        e[hip ? "hip_point_mm" : "bust_point_mm"] = {tb.x, tb.y, tb.z};
+        e[hip ? "offset_from_hip_point_mm" : "offset_from_bust_point_mm"] = {off.x, off.y, off.z};
         e["landmark_error_mm"] = geometry::norm(got - want);
       }
     } else if (b.type == "cylindrical") {

@@ -20,6 +20,9 @@ constexpr double kBustDartBelowUnderarmMm = 55;
 constexpr double kPrincessFilletMm = 30;
 // Chains sewn together may differ by this fraction of their length.
 constexpr double kChainLengthTol = 1e-3;
+// Smallest sleeve bicep per mm of armhole: size M's (350 mm on a 457 mm armhole) rounded down,
+// so M and L keep the bicep of their ease and S gets the proportions of M.
+constexpr double kBicepPerArmhole = 0.765;
 
 std::vector<Vec2> quad_points(Vec2 a, Vec2 c, Vec2 b, int n) {
   std::vector<Vec2> out;
@@ -297,9 +300,13 @@ std::vector<Piece> princess_panels(const BodiceBlock& b) {
   return out;
 }
 
-Piece draft_sleeve(const BodyMeasurements& m, double back_mm, double front_mm, double underarm_mm, double hem_width_mm) {
-  const double bicep = m.upper_arm_mm + 70;
+Piece draft_sleeve(const BodyMeasurements& m, double back_mm, double front_mm, double underarm_mm,
+                   double hem_width_mm) {
   const double target = back_mm + front_mm;
+  // The bicep: the upper arm and 70 mm of ease, and at least kBicepPerArmhole of the armhole.
+  // The armhole grades less than the arm (16 against 25 mm a size), so with the ease alone the
+  // cap of a small size is narrow and tall for its armhole; its crown then crumples on sewing.
+  const double bicep = std::max(m.upper_arm_mm + 70, kBicepPerArmhole * target);
   // Cap half from the back underarm corner to the crown; the front half is its mirror image.
   const auto half_cap = [&](double h) {
     return cubic_points({bicep / 2, 0}, {0.75 * bicep / 2, 0.05 * h}, {0.42 * bicep / 2, h}, {0, h}, 48);

@@ -56,6 +56,8 @@ std::vector<Piece> princess_panels(const BodiceBlock& b);
 
 /// A set-in sleeve whose cap is exactly `back_armhole_mm` + `front_armhole_mm` long (cap height
 /// found by bisection), `underarm_mm` long below the cap and `hem_width_mm` wide at the hem.
+/// Its bicep is the upper arm plus 70 mm of ease, and at least 0.765 of the armhole (so a
+/// small size's cap keeps size M's height for its width and sews without crumpling).
 /// The crown notch splits the cap at the back armhole's length.
 Piece draft_sleeve(const BodyMeasurements& m, double back_armhole_mm, double front_armhole_mm, double underarm_mm,
                    double hem_width_mm);

@@ -28,6 +28,18 @@ TEST(OrderReprojection, TheBustPointLandsOnEachSizesBustPointAtTheSameOffset) {
   EXPECT_GT(geometry::norm(centre_front_bust_point(size("L")) - centre_front_bust_point(size("S"))), 20);
 }
 
+TEST(OrderReprojection, TheHipPointLandsOnEachSizesHipPointAtTheSameOffset) {
+  for (const char* target : {"S", "M", "L"}) {
+    const SizeMapping map(size("M"), size(target), false);
+    const geometry::Vec3 base = centre_front_hip_point(size("M"));
+    const geometry::Vec3 want = centre_front_hip_point(size(target));
+    EXPECT_NEAR(base.y, geometry::dress_form_landmarks(size("M")).hip_y, 1e-9);
+    const geometry::Vec3 off{0, 0, 20};
+    EXPECT_LT(geometry::norm(map.map_point(base + off) - (want + off)), 1e-6) << target;
+  }
+  EXPECT_GT(geometry::norm(centre_front_hip_point(size("L")) - centre_front_hip_point(size("S"))), 20);
+}
+
 TEST(OrderReprojection, LandmarkHeightsMapOntoEachOtherAndStayInOrder) {
   const SizeMapping map(size("M"), size("L"), false);
   const auto& b = map.base_landmarks();

@@ -1,11 +1,12 @@
 // tests/scenarios/jobs/order_reprojection_slow_test.cpp: the design made on size M of each sample
-// garment, printed in S, M and L (M and L for the sleeved ones) as one order, read back from
+// garment, printed in S, M and L as one order, read back from
 // garment.obj and garment.png: the bust (or hip) motif's centre disc (31.7 mm radius) lands where
 // the design was mapped within 3 mm at the same printed size (0.5 %), the side stroke still prints
-// on both sides of its seam, the stripe keeps its axis and tile, and every size reports its seam
-// dE00.
+// on both sides of its seam, the stripe keeps its axis and tile, every size's garment passes the
+// fit checks and every size reports its seam dE00.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -141,12 +142,9 @@ std::string num(double v) {
   return s.str();
 }
 
-// The sizes each sample is ordered in. The sleeved samples leave out S: sewn in S today their
-// sleeves fail the garment checks (3 to 5 % self-intersecting triangles, docs/orders.md).
-std::string order_sizes(const std::string& sample) {
-  const bool sleeved = sample == "blouse" || sample == "dress";
-  return std::string(sleeved ? "" : R"({"size": "S", "quantity": 1}, )") +
-         R"({"size": "M", "quantity": 1}, {"size": "L", "quantity": 1})";
+// The sizes each sample is ordered in: S, M and L for all four.
+std::string order_sizes() {
+  return R"({"size": "S", "quantity": 1}, {"size": "M", "quantity": 1}, {"size": "L", "quantity": 1})";
 }
 
 // The order job of one sample (garment.png at 60 dpi: 0.42 mm texels): a 30 cm motif 20 mm in
@@ -182,7 +180,7 @@ std::string order_job(const std::string& sample) {
          stroke + R"(], "radius": "8 mm", "colour": [40, 200, 60, 255]}
   ]},
   "order": {"sizes": [)" +
-         order_sizes(sample) + R"(], "base_size": "M", "placement": "body"},
+         order_sizes() + R"(], "base_size": "M", "placement": "body"},
   "marker": {"fabric_width": "1.6 m", "gap": "4 mm", "budget": {"iterations": 2000}},
   "print": {"printer": "sim", "dpi": 150, "passes": 1, "preview_dpi": 60}
 })";
@@ -207,7 +205,7 @@ TEST_P(OrderReprojection, MotifStrokeAndStripeKeepTheirPlaceInEverySize) {
   ASSERT_GT(obj.faces.size(), 1000u);
   const auto disc = ink_by_copy(obj, *tex, 250, 196, 40);  // the motif's centre disc
   const auto side = ink_by_copy(obj, *tex, 40, 200, 60);   // the stroke
-  ASSERT_EQ(report["sizes"].size(), sample == "blouse" || sample == "dress" ? 2u : 3u);
+  ASSERT_EQ(report["sizes"].size(), 3u);
   double base_area = 0;
   for (const auto& s : report["sizes"])
     if (s["base"].get<bool>()) base_area = disc.at(s["copies"][0].get<int>()).area_mm2;
@@ -216,6 +214,16 @@ TEST_P(OrderReprojection, MotifStrokeAndStripeKeepTheirPlaceInEverySize) {
     const std::string size = s["size"];
     const int copy = s["copies"][0];
     const auto& layers = s["reprojection"]["layers"];
+    // The size's garment passed its fit checks: untangled and outside the body.
+    const auto& checks = s["garment"]["checks"];
+    const double self_fraction =
+        checks["self_intersections"].get<double>() / std::max(1.0, checks["triangles"].get<double>());
+    std::printf("figure sample=%s size=%s self_intersections=%d triangles=%d inside_body=%d\n", sample.c_str(),
+                size.c_str(), checks["self_intersections"].get<int>(), checks["triangles"].get<int>(),
+                checks["inside_body"].get<int>());
+    EXPECT_TRUE(checks["pass"].get<bool>()) << sample << " " << size;
+    EXPECT_LT(self_fraction, 0.002) << sample << " " << size;
+    EXPECT_EQ(checks["inside_body"].get<int>(), 0) << sample << " " << size;
     // The motif: its printed disc centred on the mapped centre, the same size as on M.
     const auto& motif = layers[1];
     const Ink& d = disc.at(copy);
@@ -227,6 +235,9 @@ TEST_P(OrderReprojection, MotifStrokeAndStripeKeepTheirPlaceInEverySize) {
         sample.c_str(), size.c_str(), err, d.area_mm2, ratio,
         motif.contains("landmark_error_mm") ? motif["landmark_error_mm"].dump().c_str() : "-");
     EXPECT_LT(err, 3.0) << sample << " " << size;
+    // ... and that place is the same body landmark (bust or hip point) at the same offset.
+    ASSERT_TRUE(motif.contains("landmark_error_mm")) << sample << " " << size;
+    EXPECT_LT(motif["landmark_error_mm"].get<double>(), 3.0) << sample << " " << size;
     EXPECT_NEAR(ratio, 1.0, 0.005) << sample << " " << size;
     // The stripe: its axis stays on the body axis (x = z = 0) and its tile in mm.
     const auto& stripe = layers[0];
