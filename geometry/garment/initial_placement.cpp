@@ -75,6 +75,46 @@ bool is_band(const Piece& p) {
   return n.find("waistband") != std::string::npos || n.find("belt") != std::string::npos;
 }
 
+// A piece to be rolled round the body's vertical axis: where, and the span it covers.
+struct AxisRoll {
+  size_t piece;
+  Vec3 axis_pt, d, inward;
+  double r;                       // roll radius (mm), the piece's distance from the axis unless moved out
+  double r0;                      // the distance it was placed at (set by fit_rolls_round_axis)
+  double s_lo, s_hi, y_lo, y_hi;  // extent across (along the roll) and in height (mm)
+  std::map<int, std::pair<double, double>> rows;  // extent across per kRowMm of height
+};
+
+// Height of the rows whose widths fit_rolls_round_axis adds up (mm).
+constexpr double kRowMm = 20;
+
+// Moves pieces out so that those sharing a height fit round the axis: at each height the arcs
+// (width / radius) of the pieces hanging there may add up to at most one turn. Radii only grow.
+void fit_rolls_round_axis(std::vector<AxisRoll>& rolls) {
+  for (AxisRoll& a : rolls) a.r0 = a.r;
+  if (rolls.size() < 2) return;
+  std::map<int, std::vector<std::pair<AxisRoll*, double>>> by_row;  // row: pieces and widths
+  for (AxisRoll& a : rolls)
+    for (const auto& [row, span] : a.rows) by_row[row].push_back({&a, span.second - span.first});
+  constexpr double kTurn = 2 * std::numbers::pi;
+  for (const auto& [row, at] : by_row) {
+    if (at.size() < 2) continue;
+    const auto turn = [&](double r) {
+      double sum = 0;
+      for (const auto& [a, width] : at) sum += width / std::max(a->r, r);
+      return sum;
+    };
+    if (turn(0) <= kTurn) continue;
+    double r_lo = 0, r_hi = 1;
+    while (turn(r_hi) > kTurn) r_hi *= 2;
+    for (int it = 0; it < 60; ++it) {
+      const double mid = (r_lo + r_hi) / 2;
+      (turn(mid) > kTurn ? r_lo : r_hi) = mid;
+    }
+    for (const auto& [a, width] : at) a->r = std::max(a->r, r_hi);
+  }
+}
+
 }  // namespace
 
 std::vector<std::vector<Vec3>> initial_placement(const Pattern& pattern, const PatternMesh& meshes, const BodySdf& body,
@@ -84,6 +124,7 @@ std::vector<std::vector<Vec3>> initial_placement(const Pattern& pattern, const P
   std::vector<std::vector<Vec3>> out(pattern.pieces.size());
   // Pieces without a placement get one from their role and the body's landmarks.
   const std::vector<Placement3d> placements = role_placements(pattern, body);
+  std::vector<AxisRoll> rolls;
 
   for (size_t pi = 0; pi < pattern.pieces.size(); ++pi) {
     const PieceMesh& m = meshes.pieces[pi];
@@ -135,12 +176,32 @@ std::vector<std::vector<Vec3>> initial_placement(const Pattern& pattern, const P
           r = clear;
         }
       }
-      Vec3 foot = axis_pt - inward * r;
-      Vec3 t = cross(d, inward);
-      double s_max = 0;
-      for (const Vec3& p : pts) s_max = std::max(s_max, std::abs(dot(p - foot, t)));
-      if (r > kMinRollRadiusMm && s_max / r < kMaxRollAngle) roll(pts, foot, d, inward, r);
+      AxisRoll ar{pi, axis_pt, d, inward, r, r, 1e300, -1e300, 1e300, -1e300, {}};
+      const Vec3 foot = axis_pt - inward * r, t = cross(d, inward);
+      for (const Vec3& p : pts) {
+        const double s = dot(p - foot, t);
+        ar.s_lo = std::min(ar.s_lo, s), ar.s_hi = std::max(ar.s_hi, s);
+        ar.y_lo = std::min(ar.y_lo, p.y), ar.y_hi = std::max(ar.y_hi, p.y);
+        auto [it, fresh] = ar.rows.try_emplace(static_cast<int>(std::floor(p.y / kRowMm)), s, s);
+        if (!fresh) it->second = {std::min(it->second.first, s), std::max(it->second.second, s)};
+      }
+      // Pieces too near the axis or reaching too far round it (a T-pose sleeve facing forward) stay flat.
+      const double s_max = std::max(std::abs(ar.s_lo), std::abs(ar.s_hi));
+      if (r > kMinRollRadiusMm && s_max / r < kMaxRollAngle) rolls.push_back(ar);
     }
+  }
+  // Pieces rolled round the body's axis at heights they share must fit round it side by side:
+  // a front and a back each rolled at its own distance can wrap past the sides into each other
+  // (GarmentCode 2021's skirt_2_panels: each panel 666 mm wide at 155-187 mm from the axis), so
+  // their sides' seams start crossed. Where the arcs would add up to more than a turn, the
+  // nearer pieces move out to the radius at which they just fit.
+  fit_rolls_round_axis(rolls);
+  for (const AxisRoll& ar : rolls) {
+    std::vector<Vec3>& pts = out[ar.piece];
+    const Vec3 foot = ar.axis_pt - ar.inward * ar.r;
+    const Vec3 shift = ar.inward * -(ar.r - ar.r0);
+    for (Vec3& p : pts) p = p + shift;
+    roll(pts, foot, ar.d, ar.inward, ar.r);
   }
   // Whatever placed them (their own placement, a role, a roll), no piece starts inside the body.
   push_out_of_body(out, meshes, body, clearance_mm, kPushRadius_mm, stats);
