@@ -175,6 +175,7 @@ Status stage_print(PipelineState& ps) {
     start.name = ps.job.name;
     start.first_swath = settings.first_swath_index;
     start.fabric_width_px = static_cast<std::uint32_t>(std::lround(ps.roll.width_mm / 25.4 * model->dpi_x));
+    ps.print_began = std::filesystem::file_time_type::clock::now();
     if (auto st = session->begin_job(start); !st) return st;
     // The printer's record decides where the job goes on (it may have printed past the checkpoint).
     settings.first_swath_index = session->resume_swath();
