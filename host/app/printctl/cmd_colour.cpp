@@ -55,8 +55,12 @@ void register_colour_commands(CLI::App& app) {
   auto no_ink_charts = std::make_shared<bool>(false);
   cal->add_flag("--no-ink-charts", *no_ink_charts,
                 "Skip the drop-limit, linearisation and ink-limit charts (the profile alone)");
-  cal->callback([c, printer, measurements, precondition, no_ink_charts] {
+  auto no_light_chart = std::make_shared<bool>(false);
+  cal->add_flag("--no-light-chart", *no_light_chart,
+                "Skip the light-colour chart (343 patches in the light corner of device RGB)");
+  cal->callback([c, printer, measurements, precondition, no_ink_charts, no_light_chart] {
     c->ink_charts = !*no_ink_charts;
+    c->light_chart = !*no_light_chart;
     if (!printer->empty()) c->printer_model = *printer;
     if (!precondition->empty()) c->precondition = *precondition;
     if (!measurements->empty()) c->measurements = *measurements;
