@@ -15,6 +15,7 @@
 #include "host/calibration/ink_calibration.h"
 #include "host/calibration/internal/chart_print.h"
 #include "host/calibration/internal/ink_set_json.h"
+#include "host/calibration/light_chart.h"
 
 namespace tp::host {
 
@@ -168,6 +169,18 @@ Result<CalibrateSummary> calibrate(const CalibrateOptions& o) {
         return fail(st.error());
       readings.push_back(pass_base.string() + ".ti3");
     }
+    // The light corner, densely: the spread charts leave it a few patches (light_chart.h).
+    if (o.light_chart) {
+      const fs::path light = o.out / "light";
+      const device::CgatsTable ti1 = light_chart();
+      std::ofstream(light.string() + ".ti1") << device::format_cgats(ti1);
+      if (auto st = internal::print_chart(o, ti1, light.string() + ".ti1", light, o.out / "chart-job-light",
+                                          o.out / "chart-printed-light", extras, log, s.chart_area_m2);
+          !st)
+        return fail(st.error().with_context("light chart"));
+      if (auto st = check_measurements(light.string() + ".ti3"); !st) return fail(st.error());
+      readings.push_back(light.string() + ".ti3");
+    }
     if (auto st = merge_measurements(readings, base.string() + ".ti3"); !st) return fail(st.error());
   }
   // 4. The profile, and how well it fits its own measurements.
@@ -196,7 +209,8 @@ Result<CalibrateSummary> calibrate(const CalibrateOptions& o) {
             {"chart_area_m2", s.chart_area_m2},
             {"fit_de00", {{"mean", s.fit_mean_de00}, {"max", s.fit_max_de00}}},
             {"seconds", s.seconds},
-            {"ink_charts", s.ink_charts}};
+            {"ink_charts", s.ink_charts},
+            {"light_patches", o.light_chart && !o.measurements ? light_chart().rows.size() : 0}};
   internal::add_ink_fields(m, ink_result.inks, ink_result.ink_limit_percent);
   std::ofstream(o.out / "calibration.json") << m.dump(2) << "\n";
   return s;

@@ -30,6 +30,9 @@ struct CalibrateOptions {
   /// Print the drop-limit, linearisation and ink-limit charts first and print the profiling
   /// charts through their results (host/calibration/ink_calibration.h). Not with measurements.
   bool ink_charts = true;
+  /// Print the light-colour chart (host/calibration/light_chart.h) after the spread charts and
+  /// build the profile from it too. Not with measurements.
+  bool light_chart = true;
   /// Drop limit: where an ink comes within this of its heaviest patch (host/calibration/drop_limit.h).
   double drop_limit_de00 = 1.0;
 };

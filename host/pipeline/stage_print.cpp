@@ -175,7 +175,11 @@ Status stage_print(PipelineState& ps) {
     start.name = ps.job.name;
     start.first_swath = settings.first_swath_index;
     start.fabric_width_px = static_cast<std::uint32_t>(std::lround(ps.roll.width_mm / 25.4 * model->dpi_x));
+    ps.print_began = std::filesystem::file_time_type::clock::now();
     if (auto st = session->begin_job(start); !st) return st;
+    // A job the printer completed while the host was away is not printed again: its record is
+    // from then, before this run.
+    if (session->finished_on_printer()) ps.print_began.reset();
     // The printer's record decides where the job goes on (it may have printed past the checkpoint).
     settings.first_swath_index = session->resume_swath();
     for (const Cue& c : roll_cues(ps))

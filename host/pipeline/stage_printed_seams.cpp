@@ -1,12 +1,11 @@
 // host/pipeline/stage_printed_seams.cpp: seams and allowances measured on the printed fabric: the
 // fabric's CIELAB image, descreened by an aperture average, read where the marker put each piece.
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <fstream>
-#include <thread>
 
 #include "device/colour/colorimetry.h"
+#include "host/pipeline/internal/printed_fabric_wait.h"
 #include "host/pipeline/internal/printed_seams.h"
 #include "host/session/sim_reexec.h"
 #include "rip/colour/lab_image.h"
@@ -16,27 +15,6 @@ namespace tp::host::internal {
 namespace fs = std::filesystem;
 
 namespace {
-
-// The job id printsim recorded in `dir`/printer.json, or -1 (none yet, or half written).
-std::int64_t recorded_job(const fs::path& dir) {
-  std::ifstream in(dir / "printer.json");
-  if (!in) return -1;
-  const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
-  if (j.is_discarded() || !j.contains("job") || !j["job"].is_object()) return -1;
-  const auto& id = j["job"]["id"];
-  return id.is_number_integer() ? id.get<std::int64_t>() : -1;
-}
-
-// Where printsim writes this job's fabric: its output folder itself, or (--job-dirs) the folder
-// there named after the job's id.
-std::vector<fs::path> fabric_dirs(const fs::path& printsim_dir, std::int64_t job_id) {
-  std::vector<fs::path> dirs{printsim_dir};
-  std::error_code ec;
-  const std::string prefix = std::to_string(job_id) + "-";
-  for (fs::directory_iterator it(printsim_dir, ec), end; !ec && it != end; it.increment(ec))
-    if (it->is_directory() && it->path().filename().string().rfind(prefix, 0) == 0) dirs.push_back(it->path());
-  return dirs;
-}
 
 // The fabric image averaged in XYZ over a square aperture centred on a roll point (mm).
 std::optional<geometry::Lab> aperture_lab(const rip::Image3f& img, geometry::Vec2 roll_mm, double aperture_mm) {
@@ -177,21 +155,14 @@ Result<PrintedSeams> measure_printed_seams(const PipelineState& ps, double dpi, 
     return none;
   }
   // printsim writes the fabric images, then printer.json, once the job has ended.
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(wait_s);
-  for (;;) {
-    for (const fs::path& dir : fabric_dirs(*sim_dir, ps.options.job_id)) {
-      if (recorded_job(dir) != ps.options.job_id) continue;
-      if (fs::exists(dir / "fabric-lab.tif")) return measure_printed_seams_on(ps, dpi, dir / "fabric-lab.tif");
-      none.reason = "printsim recorded job " + std::to_string(ps.options.job_id) + " in " + dir.string() +
-                    " without a fabric-lab.tif (run without --no-fabric, with a colorimetric fabric)";
-      return none;
-    }
-    if (ps.cancel.cancelled() || std::chrono::steady_clock::now() > deadline) break;
-    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  PrintedFabricWait wait{*sim_dir, ps.options.job_id, ps.print_began, wait_s};
+  auto fabric = wait_for_printed_fabric(wait, ps.cancel);
+  if (!fabric) return fail(fabric.error().with_context("printed seams"));
+  if (!fabric->fabric_lab) {
+    none.reason = fabric->reason;
+    return none;
   }
-  none.reason = "printsim wrote no fabric-lab.tif for job " + std::to_string(ps.options.job_id) + " in " +
-                sim_dir->string() + " within " + std::to_string(static_cast<int>(wait_s)) + " s";
-  return none;
+  return measure_printed_seams_on(ps, dpi, *fabric->fabric_lab);
 }
 
 }  // namespace tp::host::internal

@@ -3,7 +3,9 @@
 // fabric's colour (fabric-lab.tif).
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <memory>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "host/app/printctl/commands.h"
@@ -21,9 +23,23 @@ struct ProofCheckArgs {
   std::string out;
   std::string design = "marker.png";
   std::string fabric = "fabric-lab.tif";
-  double cell_mm = 1.0;
+  double cell_mm = 0;  ///< 0: the job's descreening aperture (descreen_cell_mm)
   std::string profile;
 };
+
+/// Without a scan's own choice, the job's fabric is descreened as its printed seams are: the
+/// aperture report.json records beside them (12 drop pitches, at least 1 mm: 2.03 mm at 150 dpi,
+/// 1.02 mm at 300 dpi). A 1 mm cell at 150 dpi holds 6 x 6 drop pitches and measures the screen's
+/// grain with the colour (docs/colour.md). 1 mm when the folder has no such report (a scan).
+double descreen_cell_mm(const std::filesystem::path& out) {
+  std::ifstream in(out / "report.json");
+  const nlohmann::json r = nlohmann::json::parse(in, nullptr, false);
+  if (!r.is_discarded())
+    for (const char* key : {"seams_printed", "allowance_printed"})
+      if (r.contains(key) && r[key].is_object() && r[key].contains("aperture_mm") && r[key]["aperture_mm"].is_number())
+        return r[key]["aperture_mm"].get<double>();
+  return 1.0;
+}
 
 }  // namespace
 
@@ -55,8 +71,12 @@ void register_colour_commands(CLI::App& app) {
   auto no_ink_charts = std::make_shared<bool>(false);
   cal->add_flag("--no-ink-charts", *no_ink_charts,
                 "Skip the drop-limit, linearisation and ink-limit charts (the profile alone)");
-  cal->callback([c, printer, measurements, precondition, no_ink_charts] {
+  auto no_light_chart = std::make_shared<bool>(false);
+  cal->add_flag("--no-light-chart", *no_light_chart,
+                "Skip the light-colour chart (343 patches in the light corner of device RGB)");
+  cal->callback([c, printer, measurements, precondition, no_ink_charts, no_light_chart] {
     c->ink_charts = !*no_ink_charts;
+    c->light_chart = !*no_light_chart;
     if (!printer->empty()) c->printer_model = *printer;
     if (!precondition->empty()) c->precondition = *precondition;
     if (!measurements->empty()) c->measurements = *measurements;
@@ -105,11 +125,14 @@ void register_colour_commands(CLI::App& app) {
   cmd->add_option("out", a->out, "A job's output folder (printctl run --out)")->required();
   cmd->add_option("--design", a->design, "Design image inside it (sRGB, white = unprinted)")->capture_default_str();
   cmd->add_option("--fabric", a->fabric, "Printed fabric colour inside it (CIELAB TIFF)")->capture_default_str();
-  cmd->add_option("--cell-mm", a->cell_mm, "Descreening cell size")->check(CLI::Range(0.1, 50.0))->capture_default_str();
+  cmd->add_option("--cell-mm", a->cell_mm,
+                  "Descreening cell size (default: the job's printed-seam aperture in report.json, else 1 mm)")
+      ->check(CLI::Range(0.1, 50.0));
   cmd->add_option("--profile", a->profile, "Printer profile (a calibration set's): leave out-of-gamut colours out, count them");
   cmd->callback([a] {
     const std::filesystem::path dir(a->out);
-    auto r = rip::check_proof(dir / a->design, dir / a->fabric, a->cell_mm, a->profile);
+    const double cell_mm = a->cell_mm > 0 ? a->cell_mm : descreen_cell_mm(dir);
+    auto r = rip::check_proof(dir / a->design, dir / a->fabric, cell_mm, a->profile);
     if (!r) {
       std::fprintf(stderr, "printctl proof-check: %s\n", r.error().what().c_str());
       throw CLI::RuntimeError(1);

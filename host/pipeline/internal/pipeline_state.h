@@ -52,6 +52,9 @@ struct PipelineState {
   std::vector<geometry::Marker> markers;          ///< as nested, each in its own frame
   geometry::Marker roll;                          ///< all markers one after another on the roll
   std::vector<double> marker_start_mm;            ///< where each marker starts on the roll
+  /// When this run opened the job on the printer (file clock): printer records written before it
+  /// are an earlier run's (printed_fabric_wait.h).
+  std::optional<std::filesystem::file_time_type> print_began;
 
   // The job's stored plan (RunOptions::plan_dir), and what each plan step was made from.
   std::optional<PlanStore> plan;

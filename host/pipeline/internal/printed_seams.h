@@ -10,6 +10,7 @@
 #include "geometry/continuity/continuity.h"
 #include "geometry/nesting/marker.h"
 #include "host/pipeline/internal/pipeline_state.h"
+#include "host/pipeline/internal/printed_fabric_wait.h"
 
 namespace tp::host::internal {
 
@@ -31,11 +32,14 @@ struct PrintedSeams {
 };
 
 /// After the print: finds this job's printed fabric (printsim writes `fabric-lab.tif` and then
-/// `printer.json` once the job has ended; waits for them up to `wait_s`), and measures the same
+/// `printer.json` once the job has ended; waits for them up to `wait_s`, wait_for_printed_fabric),
+/// and measures the same
 /// seam and allowance sample pairs as the contone figures at `dpi` on it, each point taken from
-/// piece mm to the roll by the marker's placement of the piece (the first, when several). Fails
-/// only on a fabric image that exists but cannot be read or used.
-[[nodiscard]] Result<PrintedSeams> measure_printed_seams(const PipelineState& ps, double dpi, double wait_s = 300);
+/// piece mm to the roll by the marker's placement of the piece (the first, when several). Fails on
+/// a fabric image that exists but cannot be read or used, and (kPrinter) when printsim printed the
+/// job but recorded nothing for it within `wait_s`.
+[[nodiscard]] Result<PrintedSeams> measure_printed_seams(const PipelineState& ps, double dpi,
+                                                         double wait_s = kPrintedFabricTimeout_s);
 
 /// Same, on a given fabric image (CIELAB float, roll frame, with its resolution).
 [[nodiscard]] Result<PrintedSeams> measure_printed_seams_on(const PipelineState& ps, double dpi,
