@@ -17,7 +17,8 @@ device::CgatsTable light_chart() {
   auto value = [&](int i) { return internal::fmt(100 * (kLightChartFrom + i * kLightChartStep), 4); };
   for (int r = 0; r < steps; ++r)
     for (int g = 0; g < steps; ++g)
-      for (int b = 0; b < steps; ++b) t.rows.push_back({std::to_string(t.rows.size() + 1), value(r), value(g), value(b)});
+      for (int b = 0; b < steps; ++b)
+        t.rows.push_back({std::to_string(t.rows.size() + 1), value(r), value(g), value(b)});
   return t;
 }
 

@@ -121,7 +121,8 @@ Result<PrintedFabric> wait_for_printed_fabric(const PrintedFabricWait& w, const 
   std::snprintf(timeout, sizeof timeout, "%g", w.timeout_s);
   return fail(ErrorCode::kPrinter, "printsim wrote no printer.json for job " + std::to_string(w.job_id) + " in " +
                                        w.printsim_dir.string() + " (or a <job id>-<name> folder there) within " +
-                                       timeout + " s of the print's end: is printsim still running, and did it print "
+                                       timeout +
+                                       " s of the print's end: is printsim still running, and did it print "
                                        "this job?");
 }
 
