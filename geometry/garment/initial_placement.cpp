@@ -97,7 +97,8 @@ void fit_rolls_round_axis(std::vector<AxisRoll>& rolls) {
   for (AxisRoll& a : rolls)
     for (const auto& [row, span] : a.rows) by_row[row].push_back({&a, span.second - span.first});
   constexpr double kTurn = 2 * std::numbers::pi;
-  for (const auto& [row, at] : by_row) {
+  for (const auto& row_pieces : by_row) {
+    const auto& at = row_pieces.second;  // not a structured binding: the lambda below captures it
     if (at.size() < 2) continue;
     const auto turn = [&](double r) {
       double sum = 0;
