@@ -19,13 +19,7 @@ TEST(InitialPlacement, FrontAndBackTooWideForTheirDistanceDoNotWrapIntoEachOther
   // side seams start crossed); together they fit round a circle of 600 / pi = 191 mm.
   const double w = 600, h = 300;
   BodySdf body = cylinder_body(100, 0, 600);
-  Pattern p;
-  p.name = "two_panels";
-  p.pieces = {rectangle("front", w, h), rectangle("back", w, h)};
-  p.pieces[0].placement = Placement3d{{1, 0, 0, 0, 1, 0, 0, 0, 1}, {-w / 2, 150, 150}};
-  p.pieces[1].placement = Placement3d{{-1, 0, 0, 0, 1, 0, 0, 0, -1}, {w / 2, 150, -120}};
-  p.stitches = {Stitch{EdgeSpan{0, 1, 0, -1}, EdgeSpan{1, 3, 0, -1}, false},
-                Stitch{EdgeSpan{1, 1, 0, -1}, EdgeSpan{0, 3, 0, -1}, false}};
+  const Pattern p = two_panels("two_panels", w, h, 150, 150, -120);
   TriangulateOptions to;
   to.target_edge_mm = 20;
   auto m = mesh_pattern(p, to);

@@ -44,17 +44,21 @@ inline Piece rectangle(const std::string& name, double w, double h) {
   return p;
 }
 
-// Two panels that close into a tube of radius 115 round a cylinder of radius 100 (y 100..400).
-inline Pattern tube_pattern() {
-  const double w = kPi * 115, h = 300;
+// Two flat panels `w` x `h` mm, bottom at height `y`: the front facing +z at `front_z`, the back
+// facing -z at `back_z` (negative), their side edges stitched front-right to back-left and back-right
+// to front-left.
+inline Pattern two_panels(const std::string& name, double w, double h, double y, double front_z, double back_z) {
   Pattern p;
-  p.name = "tube";
+  p.name = name;
   p.pieces = {rectangle("front", w, h), rectangle("back", w, h)};
-  p.pieces[0].placement = Placement3d{{1, 0, 0, 0, 1, 0, 0, 0, 1}, {-w / 2, 100, 115}};
-  p.pieces[1].placement = Placement3d{{-1, 0, 0, 0, 1, 0, 0, 0, -1}, {w / 2, 100, -115}};
+  p.pieces[0].placement = Placement3d{{1, 0, 0, 0, 1, 0, 0, 0, 1}, {-w / 2, y, front_z}};
+  p.pieces[1].placement = Placement3d{{-1, 0, 0, 0, 1, 0, 0, 0, -1}, {w / 2, y, back_z}};
   p.stitches = {Stitch{EdgeSpan{0, 1, 0, -1}, EdgeSpan{1, 3, 0, -1}, false},
                 Stitch{EdgeSpan{1, 1, 0, -1}, EdgeSpan{0, 3, 0, -1}, false}};
   return p;
 }
+
+// Two panels that close into a tube of radius 115 round a cylinder of radius 100 (y 100..400).
+inline Pattern tube_pattern() { return two_panels("tube", kPi * 115, 300, 100, 115, -115); }
 
 }  // namespace tp::geometry::test_fixture
