@@ -180,6 +180,7 @@ Result<CalibrateSummary> calibrate(const CalibrateOptions& o) {
         return fail(st.error().with_context("light chart"));
       if (auto st = check_measurements(light.string() + ".ti3"); !st) return fail(st.error());
       readings.push_back(light.string() + ".ti3");
+      s.light_patches = static_cast<int>(ti1.rows.size());
     }
     if (auto st = merge_measurements(readings, base.string() + ".ti3"); !st) return fail(st.error());
   }
@@ -210,7 +211,7 @@ Result<CalibrateSummary> calibrate(const CalibrateOptions& o) {
             {"fit_de00", {{"mean", s.fit_mean_de00}, {"max", s.fit_max_de00}}},
             {"seconds", s.seconds},
             {"ink_charts", s.ink_charts},
-            {"light_patches", o.light_chart && !o.measurements ? light_chart().rows.size() : 0}};
+            {"light_patches", s.light_patches}};
   internal::add_ink_fields(m, ink_result.inks, ink_result.ink_limit_percent);
   std::ofstream(o.out / "calibration.json") << m.dump(2) << "\n";
   return s;

@@ -43,6 +43,7 @@ struct CalibrateSummary {
   double seconds = 0;
   double fit_mean_de00 = 0, fit_max_de00 = 0;  ///< profcheck of the profile against its measurements
   int ink_charts = 0;                          ///< drop-limit, linearisation and ink-limit charts printed
+  int light_patches = 0;                       ///< patches of the light chart printed (0: none)
   double ink_limit_percent = 0;                ///< measured total ink limit (0: none measured)
   std::filesystem::path profile;
 };

@@ -33,9 +33,9 @@ struct PrintedSeams {
 
 /// After the print: finds this job's printed fabric (printsim writes `fabric-lab.tif` and then
 /// `printer.json` once the job has ended; waits for them up to `wait_s`, wait_for_printed_fabric),
-/// and measures the same
-/// seam and allowance sample pairs as the contone figures at `dpi` on it, each point taken from
-/// piece mm to the roll by the marker's placement of the piece (the first, when several). Fails on
+/// and measures the same seam and allowance sample pairs as the contone figures at `dpi` on it,
+/// each point taken from piece mm to the roll by the marker's placement of the piece (the first,
+/// when several). Fails on
 /// a fabric image that exists but cannot be read or used, and (kPrinter) when printsim printed the
 /// job but recorded nothing for it within `wait_s`.
 [[nodiscard]] Result<PrintedSeams> measure_printed_seams(const PipelineState& ps, double dpi,
