@@ -11,6 +11,7 @@ import struct
 import sys
 import tempfile
 import threading
+import time
 import zlib
 
 from selenium import webdriver
@@ -19,6 +20,12 @@ from selenium.webdriver.support.ui import WebDriverWait
 
 THREE = "/usr/share/javascript/three"
 HERE = os.path.dirname(os.path.abspath(__file__))
+RENDERER_JS = """
+const gl = document.createElement("canvas").getContext("webgl");
+if (!gl) return "none";
+const info = gl.getExtension("WEBGL_debug_renderer_info");
+return info ? gl.getParameter(info.UNMASKED_RENDERER_WEBGL) : gl.getParameter(gl.RENDERER);
+"""
 
 
 def read_png(data):
@@ -55,6 +62,12 @@ def read_png(data):
         rows.append([tuple(line[x:x + 3]) + ((line[x + 3],) if bpp == 4 else (255,)) for x in range(0, stride, bpp)])
         prev = line
     return width, height, rows
+
+
+def lit_share(path):
+    """Share of a screenshot's pixels that are not the viewer's black background."""
+    w, h, rows = read_png(open(path, "rb").read())
+    return sum(1 for row in rows for p in row if max(p[:3]) > 8) / max(w * h, 1)
 
 
 def hue_bins(pixels, bins=12):
@@ -97,11 +110,33 @@ def main():
             WebDriverWait(driver, 60).until(lambda d: d.title.startswith(("ready", "error")))
             title = driver.title
             print(f"viewer_title={title}")
-            errors = [e["message"] for e in driver.get_log("browser") if e.get("level") == "SEVERE"]
+            print(f"webgl={driver.execute_script(RENDERER_JS)}")
+            # The drawing buffer read back, then the screenshot. A loaded machine has shown a
+            # screenshot of the black page after the "ready" frame; each is retried a few times, and
+            # the attempts are printed, before the check reads the picture.
+            lit, attempts = 0.0, 0
+            while title.startswith("ready") and attempts < 5:
+                attempts += 1
+                lit = driver.execute_script("return window.viewerLitShare()")
+                if lit > 0.05:
+                    driver.save_screenshot(shot)
+                    if lit_share(shot) > 0.05:
+                        break
+                time.sleep(1)
+                driver.execute_script("window.viewerRender()")
+                title = driver.title
+            else:
+                driver.save_screenshot(shot)
+            print(f"canvas_lit_share={lit:.3f}")
+            print(f"attempts={attempts}")
+            logs = driver.get_log("browser")
+            errors = [e["message"] for e in logs if e.get("level") == "SEVERE"]
             print(f"console_errors={len(errors)}")
             for e in errors[:5]:
                 print(f"console_error={e}")
-            driver.save_screenshot(shot)
+            if lit <= 0.05:
+                for e in logs[:10]:
+                    print(f"console_{e.get('level', '').lower()}={e['message']}")
         finally:
             driver.quit()
             server.shutdown()
