@@ -65,6 +65,7 @@ Result<std::vector<std::string>> write_garment_print_previews(const std::filesys
   for (size_t i = 0; i < garment.pieces.size(); ++i) {
     const int piece = garment.pieces[i].piece;
     if (piece < 0 || piece >= renderer.piece_count()) continue;
+    if (garment.pieces[i].vertex_3d.empty()) continue;  // left out of this garment (garment_without)
     geometry::PieceImage img = geometry::render_piece_image(renderer, piece, dpi);
     if (img.image.width_px <= 0 || img.image.height_px <= 0) continue;
     // The print over white fabric: the preview shows the garment as it comes off the press.

@@ -321,6 +321,8 @@ Status stage_order_design(PipelineState& ps) {
       // Merge: this copy's pieces (renamed "<piece>.<size>.<copy>"), stitches and 3D garment.
       const int first_piece = static_cast<int>(ps.pattern.pieces.size());
       const int first_vertex = static_cast<int>(ps.garment->vertices_mm.size());
+      c->first_piece = first_piece;
+      c->x_offset_mm = x_offset_mm;
       nlohmann::json names = nlohmann::json::array();
       for (size_t k = 0; k < s.ps->pattern.pieces.size(); ++k) {
         geometry::Piece p = s.ps->pattern.pieces[k];

@@ -13,6 +13,7 @@
 #include "host/common/atomic_file.h"
 #include "host/pipeline/garment_files.h"
 #include "host/pipeline/internal/gamut_report.h"
+#include "host/pipeline/internal/order_run.h"
 #include "host/pipeline/internal/output_files.h"
 #include "host/pipeline/internal/pipeline_state.h"
 #include "host/pipeline/internal/printed_seams.h"
@@ -74,8 +75,11 @@ Status stage_outputs(PipelineState& ps) {
     files["texture_width_px"] = tex->texture_width_px;
     files["texture_height_px"] = tex->texture_height_px;
     // The garment wearing its print, as the sewn previews see it.
-    auto print_previews = write_garment_print_previews(
-        out, "garment-print-", worn, ps.body ? &ps.body->mesh() : nullptr, *ps.renderer, kPrintPreviewDpi);
+    // An order's copies stand side by side in `worn`: each size is shown on its own body.
+    auto print_previews =
+        ps.order ? write_order_print_previews(ps, worn, kPrintPreviewDpi)
+                 : write_garment_print_previews(out, "garment-print-", worn, ps.body ? &ps.body->mesh() : nullptr,
+                                                *ps.renderer, kPrintPreviewDpi);
     if (!print_previews) return fail(print_previews.error());
     files["print_previews"] = *print_previews;
   }

@@ -30,6 +30,8 @@ struct OrderCopyRun {
   nlohmann::json report = nlohmann::json::object();
   std::unique_ptr<PipelineState> ps;
   std::vector<std::string> piece_names;  ///< names in the order's merged pattern
+  int first_piece = 0;                   ///< its first piece in the order's merged pattern
+  double x_offset_mm = 0;                ///< where its garment sits in the order's merged garment
 };
 
 struct OrderRun {
@@ -42,6 +44,16 @@ struct OrderRun {
 [[nodiscard]] Status stage_order_mesh(PipelineState& ps);
 [[nodiscard]] Status stage_order_garment(PipelineState& ps);
 [[nodiscard]] Status stage_order_design(PipelineState& ps);
+
+/// The first copy of `c`'s size as it sits alone on its body: its pieces of the order's merged
+/// garment (the others emptied, as geometry::garment_without does), moved back by its offset.
+[[nodiscard]] geometry::Garment order_copy_garment(const geometry::Garment& merged, const OrderCopyRun& c);
+
+/// Writes each size's `sizes/<size>/garment-print-{front,side,back}.png` (its first copy wearing
+/// its print, on the size's body; `report.sizes[].print_previews`) and copies the base size's to
+/// the job's own `garment-print-*.png`, whose names it returns.
+[[nodiscard]] Result<std::vector<std::string>> write_order_print_previews(PipelineState& ps,
+                                                                          const geometry::Garment& worn, double dpi);
 
 /// report.order's marker and print figures, once every stage has run (run_job).
 void finish_order_report(nlohmann::json& report);

@@ -44,6 +44,22 @@ long ink_pixels(const fs::path& png, int r = 20, int g = 30, int b = 90) {
   return n;
 }
 
+// Pixels of a lit 3D preview in the number's navy: bluish and dark, whatever the shading.
+long navy_pixels(const fs::path& png) {
+  auto img = rip::read_image(png);
+  if (!img) return -1;
+  long n = 0;
+  for (const auto& p : img->pixels) n += p.a > 200 && p.b > p.r + 25 && p.b > p.g + 20 && p.r < 100 && p.b < 160;
+  return n;
+}
+
+std::string file_bytes(const fs::path& f) {
+  std::ifstream in(f, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
 TEST(OrderOnSimulator, OneMarkerEveryPieceEachCopyItsOwnText) {
   const fs::path dir = scratch_dir("order_on_simulator");
   fs::create_directories(dir / "job");
@@ -108,6 +124,18 @@ TEST(OrderOnSimulator, OneMarkerEveryPieceEachCopyItsOwnText) {
   EXPECT_GT(back2, 50);
   EXPECT_NE(back1, back2);  // "7" and "10" do not ink the same area
   EXPECT_EQ(front1, 0);
+
+  // Each size's print previews show its first copy on that size's own body (not copy 1, size S,
+  // inside the base size's body with the other copies beside it): S's number is seen from the
+  // back, and the job's own previews are the base size's.
+  for (const auto& sz : rep["sizes"]) {
+    ASSERT_EQ(sz["print_previews"].size(), 3u) << sz.dump();
+    for (const auto& f : sz["print_previews"]) EXPECT_TRUE(fs::is_regular_file(out / f.get<std::string>())) << f;
+  }
+  EXPECT_GT(navy_pixels(out / "sizes" / "S" / "garment-print-back.png"), 200);
+  EXPECT_GT(navy_pixels(out / "sizes" / "M" / "garment-print-back.png"), 200);
+  ASSERT_EQ(rep["garment"]["files"]["print_previews"].size(), 3u);
+  EXPECT_EQ(file_bytes(out / "garment-print-back.png"), file_bytes(out / "sizes" / "M" / "garment-print-back.png"));
 
   // The side sweep crosses the left side seam in every size: inked on the left front and back.
   for (const char* copy : {"S.1", "M.3"}) {
