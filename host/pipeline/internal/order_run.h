@@ -45,8 +45,8 @@ struct OrderRun {
 [[nodiscard]] Status stage_order_garment(PipelineState& ps);
 [[nodiscard]] Status stage_order_design(PipelineState& ps);
 
-/// The first copy of `c`'s size as it sits alone on its body: its pieces of the order's merged
-/// garment (the others emptied, as geometry::garment_without does), moved back by its offset.
+/// Copy `c` alone on its size's body: its pieces of the order's merged garment (the others
+/// emptied, as geometry::garment_without does), moved back by its offset.
 [[nodiscard]] geometry::Garment order_copy_garment(const geometry::Garment& merged, const OrderCopyRun& c);
 
 /// Writes each size's `sizes/<size>/garment-print-{front,side,back}.png` (its first copy wearing
