@@ -2,11 +2,26 @@
 #include "geometry/common/thread_pool.h"
 
 #include <algorithm>
+#include <chrono>
 #include <system_error>
 
 namespace tp {
+namespace {
 
-ThreadPool::ThreadPool(int threads) {
+// Polls `ready` for up to `spin_us` microseconds; true once it held.
+template <class Ready>
+bool spin_until(int spin_us, Ready&& ready) {
+  if (spin_us <= 0) return false;
+  const auto until = std::chrono::steady_clock::now() + std::chrono::microseconds(spin_us);
+  for (int k = 0;; ++k) {
+    if (ready()) return true;
+    if ((k & 63) == 63 && std::chrono::steady_clock::now() > until) return false;
+  }
+}
+
+}  // namespace
+
+ThreadPool::ThreadPool(int threads, int spin_us) : spin_us_(spin_us) {
   if (threads <= 0) threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   // A system out of threads (EAGAIN) leaves the pool with the workers it has: the caller's
   // thread does the rest, and results do not depend on the split.
@@ -34,16 +49,18 @@ void ThreadPool::run_indices(int worker) {
 void ThreadPool::worker_loop(int worker) {
   std::uint64_t seen = 0;
   for (;;) {
+    // A new loop bumps the generation under the lock, after its task is set.
+    spin_until(spin_us_, [&] { return generation_.load(std::memory_order_acquire) != seen; });
     {
       std::unique_lock lock(mutex_);
-      wake_.wait(lock, [&] { return stop_ || generation_ != seen; });
+      wake_.wait(lock, [&] { return stop_ || generation_.load(std::memory_order_relaxed) != seen; });
       if (stop_) return;
-      seen = generation_;
+      seen = generation_.load(std::memory_order_relaxed);
     }
     run_indices(worker);
     {
       std::lock_guard lock(mutex_);
-      if (--busy_ == 0) done_.notify_one();
+      if (busy_.fetch_sub(1, std::memory_order_acq_rel) == 1) done_.notify_one();
     }
   }
 }
@@ -59,13 +76,14 @@ void ThreadPool::parallel_for(int count, const std::function<void(int, int)>& fn
     task_ = &fn;
     count_ = count;
     next_.store(0, std::memory_order_relaxed);
-    busy_ = static_cast<int>(workers_.size());
-    ++generation_;
+    busy_.store(static_cast<int>(workers_.size()), std::memory_order_relaxed);
+    generation_.fetch_add(1, std::memory_order_release);
   }
   wake_.notify_all();
   run_indices(0);
+  spin_until(spin_us_, [&] { return busy_.load(std::memory_order_acquire) == 0; });
   std::unique_lock lock(mutex_);
-  done_.wait(lock, [&] { return busy_ == 0; });
+  done_.wait(lock, [&] { return busy_.load(std::memory_order_relaxed) == 0; });
   task_ = nullptr;
 }
 

@@ -38,6 +38,13 @@ TEST(ThreadPool, ResultsWrittenByIndexDoNotDependOnTheThreadCount) {
   EXPECT_EQ(sums(1), sums(3));
 }
 
+TEST(ThreadPool, PollingWorkersRunManyShortLoopsEveryIndexOnce) {
+  ThreadPool pool(2, 300);
+  std::vector<std::atomic<int>> runs(8);
+  for (int loop = 0; loop < 5000; ++loop) pool.parallel_for(8, [&](int i, int) { runs[static_cast<size_t>(i)]++; });
+  for (auto& r : runs) EXPECT_EQ(r.load(), 5000);
+}
+
 TEST(ThreadPool, EmptyLoopReturnsAtOnce) {
   ThreadPool pool(2);
   int calls = 0;
