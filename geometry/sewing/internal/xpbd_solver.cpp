@@ -10,6 +10,7 @@
 
 #include "geometry/common/thread_pool.h"
 #include "geometry/sewing/internal/self_collision.h"
+#include "geometry/sewing/internal/strain_blocks.h"
 
 namespace tp::geometry::internal {
 namespace {
@@ -21,6 +22,15 @@ constexpr double kZeroStretch = 1e-20;
 constexpr double kRelativeSingular = 1e-9;
 /// A strain-limit correction along an edge shorter than this (mm) has no direction.
 constexpr double kZeroLength_mm = 1e-12;
+/// The strain projections run in rounds of 2^3 vertex-disjoint blocks (whatever the thread
+/// count), the bands between one round's blocks split again in the next, then the rest in one
+/// thread.
+constexpr int kStrainBlockLevels = 3;
+constexpr int kStrainBlockRounds = 3;
+/// A substep runs about 60 short parallel loops: the workers poll between them rather than sleep
+/// (shirt_mean's drape at 10,174 vertices, one run each: strain passes 6.8 s sleeping, 6.0 s
+/// polling for 300 us).
+constexpr int kPoolSpin_us = 300;
 
 // Runs fn(begin, end) over fixed chunks of [0, n) on the pool; fn must only touch its own range.
 template <class Fn>
@@ -130,7 +140,7 @@ Result<XpbdStats> run_xpbd(ClothModel& cloth, const BodySdf& body, const XpbdPar
   const double decay = std::exp(-p.damping_per_s * dt);
   const int total = static_cast<int>(std::ceil(p.duration_s / dt));
   const double pad_mm = std::max(p.broad_phase_pad_mm, 0.05);
-  ThreadPool pool(std::clamp(p.threads, 1, 8));
+  ThreadPool pool(std::clamp(p.threads, 1, 8), kPoolSpin_us);
   // Per-substep travel budget: inertial motion is clamped to it and any move (constraints
   // included) to twice it. It follows the cloth's speed (1.5 x the fastest vertex's last
   // substep), at most max_move. The pairs are searched again before any vertex can have moved
@@ -145,6 +155,7 @@ Result<XpbdStats> run_xpbd(ClothModel& cloth, const BodySdf& body, const XpbdPar
   std::vector<double> depth(n);
   SelfCollisionPairs pairs;
   SelfCollisionScratch scratch;
+  StrainBlocks blocks = plan_strain_blocks(cloth.triangles, cloth.inv_mass, x, kStrainBlockLevels, kStrainBlockRounds);
   // Sewing: every stitched pair's allowed distance shrinks from its start at a fixed speed.
   const bool sewing = !cloth.stitches.empty();
   std::vector<double> stitch_start(cloth.stitches.size());
@@ -182,7 +193,8 @@ Result<XpbdStats> run_xpbd(ClothModel& cloth, const BodySdf& body, const XpbdPar
       x[i] += v[i] * dt;
     }
     // Membrane (each pass followed by the stitches, so seams are not left to the last word of
-    // the strain limit), then bending, in their fixed order.
+    // the strain limit), then bending, in their fixed order. Each membrane pass runs its blocks
+    // in parallel: they share no vertex, so the result is one whatever runs them.
     const double closed_mm = p.stitch_close_mm_s > 0 ? p.stitch_close_mm_s * (step + 1) * dt : 1e300;
     auto project_stitches = [&] {
       for (size_t k = 0; k < cloth.stitches.size(); ++k) {
@@ -198,8 +210,7 @@ Result<XpbdStats> run_xpbd(ClothModel& cloth, const BodySdf& body, const XpbdPar
       }
     };
     for (int pass = 0; pass < p.stretch_passes; ++pass) {
-      for (const RestTriangle& t : cloth.triangles)
-        project_triangle(t, cloth.inv_mass, p.stretch_limit, p.stretch_stiffness, x);
+      project_strain_blocks(blocks, cloth.triangles, cloth.inv_mass, p.stretch_limit, p.stretch_stiffness, pool, x);
       if (sewing) project_stitches();
     }
     for (const BendStencil& s : cloth.bends) project_bend(s, cloth.inv_mass, dt2, x);

@@ -43,7 +43,7 @@ struct XpbdParams {
   double stitch_done_mm = 1;
   /// Sewing also stops once the widest gap has not narrowed by 1 % for this long (simulated s).
   double stitch_stall_s = 0.5;
-  int threads = 2;  ///< body queries and pair search; results do not depend on it
+  int threads = 2;  ///< strain passes, body queries and pair search; results do not depend on it
   /// Called at each broad phase with the share of the time limit simulated (progress), may be empty.
   std::function<void(double fraction)> on_progress;
 };
@@ -62,7 +62,8 @@ struct XpbdStats {
 };
 
 /// Steps `cloth` (positions updated in place, starting at rest) under `p` on `body`.
-/// Deterministic: constraints run in a fixed order on one thread; body queries are per vertex.
+/// Deterministic: constraints run in a fixed order; the strain passes in vertex-disjoint blocks
+/// (strain_blocks.h) that are the same for any thread count; body queries are per vertex.
 /// Fails with kSewing if positions stop being finite, kCancelled when `cancel` fires.
 [[nodiscard]] Result<XpbdStats> run_xpbd(ClothModel& cloth, const BodySdf& body, const XpbdParams& p,
                                          const CancelToken* cancel);

@@ -10,31 +10,12 @@
 #include "geometry/garment/fit_checks.h"
 #include "geometry/sewing/internal/cloth_model.h"
 #include "geometry/sewing/internal/xpbd_solver.h"
+#include "sheet_fixture.h"
 
 namespace tp::geometry {
 namespace {
 
-// A square sheet of side `side_mm` as one piece (a regular grid, `cells` per side), lying flat
-// at height y_mm centred over the origin, its 2D y running along -z.
-Garment flat_sheet(double side_mm, int cells, double y_mm) {
-  Garment g;
-  GarmentPiece gp;
-  const double step = side_mm / cells;
-  for (int j = 0; j <= cells; ++j)
-    for (int i = 0; i <= cells; ++i) {
-      gp.mesh.vertices_mm.push_back({i * step, j * step});
-      gp.vertex_3d.push_back(static_cast<int>(g.vertices_mm.size()));
-      g.vertices_mm.push_back({i * step - side_mm / 2, y_mm, side_mm / 2 - j * step});
-    }
-  const auto id = [&](int i, int j) { return j * (cells + 1) + i; };
-  for (int j = 0; j < cells; ++j)
-    for (int i = 0; i < cells; ++i) {
-      gp.mesh.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
-      gp.mesh.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i, j + 1)});
-    }
-  g.pieces.push_back(std::move(gp));
-  return g;
-}
+using test_fixture::flat_sheet;
 
 TEST(DrapeGarment, DihedralGradientMatchesFiniteDifferences) {
   std::vector<Vec3> x = {{0, 0, 0}, {10, 1, 0}, {4, 8, 1}, {5, -7, 3}};
