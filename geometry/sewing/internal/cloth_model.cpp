@@ -55,13 +55,17 @@ ClothModel build_cloth_model(const Garment& g, const ClothMaterial& m) {
   const int n = static_cast<int>(cm.x_mm.size());
   std::vector<double> mass(n, 0.0);
   cm.vertex_piece.assign(n, -1);
+  cm.vertex_rest_mm.assign(n, Vec2{});
   std::vector<int> tri_piece;
   double edge_sum = 0;
   int edge_count = 0;
   for (size_t p = 0; p < g.pieces.size(); ++p) {
     const GarmentPiece& gp = g.pieces[p];
     for (size_t v = 0; v < gp.vertex_3d.size(); ++v)
-      if (cm.vertex_piece[gp.vertex_3d[v]] < 0) cm.vertex_piece[gp.vertex_3d[v]] = static_cast<int>(p);
+      if (cm.vertex_piece[gp.vertex_3d[v]] < 0) {
+        cm.vertex_piece[gp.vertex_3d[v]] = static_cast<int>(p);
+        cm.vertex_rest_mm[gp.vertex_3d[v]] = gp.mesh.vertices_mm[v];
+      }
     for (const auto& t : gp.mesh.triangles) {
       RestTriangle rt;
       for (int k = 0; k < 3; ++k) rt.v[k] = gp.vertex_3d[t[k]];

@@ -34,6 +34,7 @@ struct ClothModel {
   std::vector<BendStencil> bends;
   std::vector<std::array<int, 2>> edges;      ///< unique undirected edges (self-collision)
   std::vector<int> vertex_piece;              ///< #V piece of the vertex's first chart
+  std::vector<Vec2> vertex_rest_mm;           ///< #V the vertex in that chart (pattern mm)
   double mean_edge_mm = 0;
   /// Sewing only (empty when draping a sewn garment): vertex pairs a stitch draws together,
   /// and per vertex its weld group (the lowest vertex stitched to it, transitively; itself if

@@ -46,7 +46,8 @@ struct SelfCollisionScratch {
   std::vector<std::vector<EdgeEdgePair>> edge_edge_parts;
 };
 
-/// Every vertex-triangle and edge-edge pair (sharing no vertex) closer than `margin_mm` at `x`,
+/// Every vertex-triangle and edge-edge pair (sharing no vertex, and not mesh neighbours: of one
+/// piece with corners within 1.5 mean edges in the pattern) closer than `margin_mm` at `x`,
 /// found through a spatial hash of cell size about the mean edge, in a fixed order (the same for
 /// any size of `pool`, which splits the queries; null: the calling thread only). `scratch` (may be
 /// null) keeps the buffers for the next search.
