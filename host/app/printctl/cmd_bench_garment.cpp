@@ -184,7 +184,8 @@ void bench_one(const std::string& name, geometry::Pattern pattern, const geometr
   // The drape in the bench's fabric: its time and whether it stayed untangled and outside the body.
   double drape_seconds = 0;
   int drape_self = -1, drape_inside = -1;
-  double drape_strain_p95 = -1;
+  double drape_strain_p95 = -1, drape_simulated_s = 0;
+  bool drape_settled = false;
   if (a.drape) {
     geometry::DrapeOptions d;
     auto m = geometry::cloth_material_preset(a.material);
@@ -195,6 +196,8 @@ void bench_one(const std::string& name, geometry::Pattern pattern, const geometr
     auto dg = geometry::drape_garment(*g, body, d, &ds);
     if (!dg) return error_line(dg.error().what());
     drape_seconds = ds.seconds;
+    drape_simulated_s = ds.simulated_s;
+    drape_settled = ds.settled;
     drape_self = geometry::count_self_intersections(*dg);
     const geometry::DistortionReport dr = geometry::measure_distortion(pattern, *dg, &body);
     drape_inside = dr.inside_body;
@@ -213,14 +216,15 @@ void bench_one(const std::string& name, geometry::Pattern pattern, const geometr
       "off_body=%.4f "
       "unsewn=%zu start_inside=%d start_inside_pushed=%d start_max_push_mm=%.1f "
       "strain_mean=%.4f strain_p95=%.4f seam_len_diff_max=%.4f aligned=%s seconds=%.2f drape_seconds=%.2f "
-      "drape_self_intersections=%d drape_inside_body=%d drape_strain_p95=%.4f "
-      "gathered_fraction=%.3f checks=%s%s%s\n",
+      "drape_self_intersections=%d drape_inside_body=%d drape_strain_p95=%.4f drape_simulated_s=%.3f "
+      "drape_settled=%s gathered_fraction=%.3f checks=%s%s%s\n",
       name.c_str(), o.solver == geometry::SewSolver::kXpbd ? "xpbd" : "arap", stats.levels, r.vertices,
       pattern.stitches.size(), suggested, fit.stitch_gap_max_mm, fit.stitch_gap_p95_mm, fit.self_intersections,
       fit.inside_body, r.min_clearance_mm, fit.body_distance_p50_mm, fit.body_distance_p95_mm, fit.off_body,
       fit.unsewn_pieces.size(), start.inside_before, start.inside_after, start.max_push_mm, r.strain_mean, r.strain_p95,
       r.seam_len_diff_max, aligned ? "yes" : "no", seconds, drape_seconds, drape_self, drape_inside, drape_strain_p95,
-      gathered_fraction(r), fit.pass ? "pass" : "fail", failed.empty() ? "" : " failed=", failed.c_str());
+      drape_simulated_s, drape_settled ? "yes" : "no", gathered_fraction(r), fit.pass ? "pass" : "fail",
+      failed.empty() ? "" : " failed=", failed.c_str());
   for (const auto& f : fit.failures) std::printf("  %s: %s (look at %s_%s.png)\n", f.check.c_str(), f.message.c_str(), name.c_str(), f.view.c_str());
   std::fflush(stdout);
 }
