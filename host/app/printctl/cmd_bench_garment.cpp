@@ -223,8 +223,11 @@ void bench_one(const std::string& name, geometry::Pattern pattern, const geometr
       fit.inside_body, r.min_clearance_mm, fit.body_distance_p50_mm, fit.body_distance_p95_mm, fit.off_body,
       fit.unsewn_pieces.size(), start.inside_before, start.inside_after, start.max_push_mm, r.strain_mean, r.strain_p95,
       r.seam_len_diff_max, aligned ? "yes" : "no", seconds, drape_seconds, drape_self, drape_inside, drape_strain_p95,
-      drape_simulated_s, drape_settled ? "yes" : "no", gathered_fraction(r), fit.pass ? "pass" : "fail",
-      failed.empty() ? "" : " failed=", failed.c_str());
+      drape_simulated_s,
+      !a.drape        ? "off"
+      : drape_settled ? "yes"
+                      : "no",
+      gathered_fraction(r), fit.pass ? "pass" : "fail", failed.empty() ? "" : " failed=", failed.c_str());
   for (const auto& f : fit.failures) std::printf("  %s: %s (look at %s_%s.png)\n", f.check.c_str(), f.message.c_str(), name.c_str(), f.view.c_str());
   std::fflush(stdout);
 }
