@@ -66,14 +66,61 @@ double sewn_length(const Garment& g, const GarmentPiece& gp, const std::vector<i
   return l;
 }
 
+// The area-weighted 95th percentile of (strain, area) pairs; sorts them.
+double weighted_p95(std::vector<std::pair<double, double>>& strain_area) {
+  double total = 0;
+  for (auto [s, a] : strain_area) total += a;
+  if (!(total > 0)) return 0;
+  std::sort(strain_area.begin(), strain_area.end());
+  double acc = 0, p95 = 0;
+  for (auto [s, a] : strain_area) {
+    acc += a;
+    p95 = s;
+    if (acc >= 0.95 * total) break;
+  }
+  return p95;
+}
+
+double segment_distance(Vec2 q, Vec2 a, Vec2 b) {
+  const Vec2 d = b - a;
+  const double len2 = dot(d, d);
+  const double t = len2 > 0 ? std::clamp(dot(q - a, d) / len2, 0.0, 1.0) : 0.0;
+  return norm(a + d * t - q);
+}
+
+// Per piece, the 2D seam polylines (span vertices in order) of the marked eased stitches.
+std::vector<std::vector<std::vector<Vec2>>> eased_spans(const Pattern& pattern, const Garment& g) {
+  std::vector<std::vector<std::vector<Vec2>>> out(g.pieces.size());
+  for (const Stitch& st : pattern.stitches) {
+    if (!(st.ease_ratio > 0)) continue;
+    for (const EdgeSpan* sp : {&st.a, &st.b}) {
+      std::vector<Vec2> line;
+      for (int v : span_vertices(pattern, g, *sp)) line.push_back(g.pieces[sp->piece].mesh.vertices_mm[v]);
+      if (!line.empty()) out[sp->piece].push_back(std::move(line));
+    }
+  }
+  return out;
+}
+
+bool in_eased_region(const std::vector<std::vector<Vec2>>& lines, Vec2 q) {
+  for (const auto& line : lines) {
+    if (line.size() == 1 && norm(line[0] - q) <= kEasedRegionMm) return true;
+    for (size_t k = 1; k < line.size(); ++k)
+      if (segment_distance(q, line[k - 1], line[k]) <= kEasedRegionMm) return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 DistortionReport measure_distortion(const Pattern& pattern, const Garment& g, const BodySdf* body) {
   DistortionReport r;
   r.vertices = static_cast<int>(g.vertices_mm.size());
-  std::vector<std::pair<double, double>> strain_area;  // (strain, 2D area)
-  double area2 = 0, area3 = 0;
-  for (const GarmentPiece& gp : g.pieces) {
+  std::vector<std::pair<double, double>> strain_area, plain, eased;  // (strain, 2D area)
+  double area2 = 0, area3 = 0, eased_area2 = 0;
+  const auto eased_lines = eased_spans(pattern, g);
+  for (size_t pi = 0; pi < g.pieces.size(); ++pi) {
+    const GarmentPiece& gp = g.pieces[pi];
     for (const auto& t : gp.mesh.triangles) {
       std::array<Vec2, 3> p{gp.mesh.vertices_mm[t[0]], gp.mesh.vertices_mm[t[1]], gp.mesh.vertices_mm[t[2]]};
       std::array<Vec3, 3> x{g.vertices_mm[gp.vertex_3d[t[0]]], g.vertices_mm[gp.vertex_3d[t[1]]],
@@ -82,6 +129,9 @@ DistortionReport measure_distortion(const Pattern& pattern, const Garment& g, co
       double a3 = 0.5 * norm(cross(x[1] - x[0], x[2] - x[0]));
       auto [s1, s2] = singular_values(p, x);
       strain_area.push_back({std::max(std::abs(s1 - 1), std::abs(s2 - 1)), a2});
+      const bool in_eased = in_eased_region(eased_lines[pi], (p[0] + p[1] + p[2]) / 3.0);
+      (in_eased ? eased : plain).push_back(strain_area.back());
+      if (in_eased) eased_area2 += a2;
       area2 += a2;
       area3 += a3;
       ++r.triangles;
@@ -91,14 +141,11 @@ DistortionReport measure_distortion(const Pattern& pattern, const Garment& g, co
     double sum = 0;
     for (auto [s, a] : strain_area) sum += s * a;
     r.strain_mean = sum / area2;
-    std::sort(strain_area.begin(), strain_area.end());
-    double acc = 0;
-    for (auto [s, a] : strain_area) {
-      acc += a;
-      r.strain_p95 = s;
-      if (acc >= 0.95 * area2) break;
-    }
+    r.strain_p95 = weighted_p95(strain_area);
     r.strain_max = strain_area.back().first;
+    r.strain_p95_plain = weighted_p95(plain);
+    r.strain_p95_eased = weighted_p95(eased);
+    r.eased_area_fraction = eased_area2 / area2;
     r.area_change = (area3 - area2) / area2;
   }
 
@@ -114,7 +161,9 @@ DistortionReport measure_distortion(const Pattern& pattern, const Garment& g, co
     sl.sewn_mm = sewn_length(g, g.pieces[st.a.piece], va);
     double ref = std::max(sl.a_mm, sl.b_mm);
     sl.diff = ref > 0 ? std::max({std::abs(sl.sewn_mm - sl.a_mm), std::abs(sl.sewn_mm - sl.b_mm), std::abs(sl.a_mm - sl.b_mm)}) / ref : 0;
+    sl.eased = st.ease_ratio > 0;
     r.seam_len_diff_max = std::max(r.seam_len_diff_max, sl.diff);
+    if (!sl.eased) r.seam_len_diff_max_plain = std::max(r.seam_len_diff_max_plain, sl.diff);
     r.seams.push_back(sl);
   }
 

@@ -79,6 +79,53 @@ TEST(Distortion, FlatAndStretchedGarments) {
   EXPECT_NEAR(r.area_change, 0.1, 1e-9);
 }
 
+// A 400 x 200 mm piece meshed on a 20 mm grid, lying flat in 3D at z.
+GarmentPiece grid_piece(int first_3d) {
+  GarmentPiece gp;
+  const int nx = 21, ny = 11;
+  for (int j = 0; j < ny; ++j)
+    for (int i = 0; i < nx; ++i) gp.mesh.vertices_mm.push_back({20.0 * i, 20.0 * j});
+  for (int j = 0; j + 1 < ny; ++j)
+    for (int i = 0; i + 1 < nx; ++i) {
+      const int a = j * nx + i, b = a + 1, c = a + nx + 1, d = a + nx;
+      gp.mesh.triangles.push_back({a, b, c});
+      gp.mesh.triangles.push_back({a, c, d});
+    }
+  gp.mesh.edge_vertices.resize(4);
+  for (int i = 0; i < nx; ++i) gp.mesh.edge_vertices[0].push_back(i);                       // hem
+  for (int j = 0; j < ny; ++j) gp.mesh.edge_vertices[1].push_back(j * nx + nx - 1);         // right
+  for (int i = nx - 1; i >= 0; --i) gp.mesh.edge_vertices[2].push_back((ny - 1) * nx + i);  // top
+  for (int j = ny - 1; j >= 0; --j) gp.mesh.edge_vertices[3].push_back(j * nx);             // left
+  for (size_t v = 0; v < gp.mesh.vertices_mm.size(); ++v) gp.vertex_3d.push_back(first_3d + static_cast<int>(v));
+  return gp;
+}
+
+TEST(Distortion, TheEasedRegionsStrainAndSeamsAreReportedApart) {
+  // a's hem gathered (marked, ratio 1.5) into b's top, a's top sewn plain to b's hem.
+  Pattern p;
+  p.pieces = {rectangle("a", 400, 200), rectangle("b", 400, 200)};
+  p.stitches = {Stitch{EdgeSpan{0, 0, 0, -1}, EdgeSpan{1, 2, 0, -1}, false, 1.5},
+                Stitch{EdgeSpan{0, 2, 0, -1}, EdgeSpan{1, 0, 0, -1}, false}};
+  Garment g;
+  g.pieces = {grid_piece(0), grid_piece(231)};
+  for (const GarmentPiece& gp : g.pieces)
+    for (Vec2 v : gp.mesh.vertices_mm) g.vertices_mm.push_back({v.x, v.y, 1000.0 * (g.vertices_mm.size() >= 231)});
+  // a's bottom 40 mm stretched 20 % along the hem: all within 60 mm of the gathered seam.
+  for (int v = 0; v < 231; ++v)
+    if (g.vertices_mm[static_cast<size_t>(v)].y <= 40) g.vertices_mm[static_cast<size_t>(v)].x *= 1.2;
+  const DistortionReport r = measure_distortion(p, g, nullptr);
+  EXPECT_GT(r.strain_p95, 0.15);
+  EXPECT_NEAR(r.strain_p95_plain, 0, 1e-12);
+  EXPECT_GT(r.strain_p95_eased, 0.15);
+  // Three 20 mm rows of each piece's ten have their centroids within 60 mm of the gathered seam.
+  EXPECT_NEAR(r.eased_area_fraction, 0.3, 1e-9);
+  ASSERT_EQ(r.seams.size(), 2u);
+  EXPECT_TRUE(r.seams[0].eased);
+  EXPECT_FALSE(r.seams[1].eased);
+  EXPECT_NEAR(r.seam_len_diff_max, 0.2, 1e-9);
+  EXPECT_NEAR(r.seam_len_diff_max_plain, 0, 1e-12);
+}
+
 TEST(GarmentObj, OnePositionPerSeamVertexAndOneUvPerPiece) {
   BodySdf body = cylinder_body(100, 0, 600);
   Pattern p = tube_pattern();
