@@ -207,6 +207,10 @@ Status stage_garment(PipelineState& ps) {
                           {"strain_max", d.strain_max},
                           {"area_change", d.area_change},
                           {"seam_len_diff_max", d.seam_len_diff_max},
+                          {"seam_len_diff_max_plain", d.seam_len_diff_max_plain},
+                          {"strain_p95_plain", d.strain_p95_plain},
+                          {"strain_p95_eased", d.strain_p95_eased},
+                          {"eased_area_fraction", d.eased_area_fraction},
                           {"inside_body", d.inside_body},
                           {"min_clearance_mm", ps.body ? nlohmann::json(d.min_clearance_mm) : nlohmann::json(nullptr)}};
   ps.report["garment"]["stitches"] = stitches_json(ps.pattern, ps.stitch_sources, stats.stitch_gap_mm);
