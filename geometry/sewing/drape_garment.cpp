@@ -1,12 +1,19 @@
 // geometry/sewing/drape_garment.cpp: the sewn garment handed to the XPBD solver with its fabric.
 #include "geometry/sewing/drape_garment.h"
 
+#include <algorithm>
 #include <chrono>
 
 #include "geometry/sewing/internal/cloth_model.h"
 #include "geometry/sewing/internal/xpbd_solver.h"
 
 namespace tp::geometry {
+namespace {
+
+/// The drape's speed limit: the travel budget per substep is at most this times the substep.
+constexpr double kMaxSpeed_mm_s = 120;
+
+}  // namespace
 
 Result<Garment> drape_garment(const Garment& sewn, const BodySdf& body, const DrapeOptions& o, DrapeStats* stats,
                               const CancelToken* cancel) {
@@ -25,8 +32,9 @@ Result<Garment> drape_garment(const Garment& sewn, const BodySdf& body, const Dr
   p.body_thickness_mm = o.clearance_mm;
   p.self_thickness_mm = o.self_thickness_mm;
   // A vertex moves at most 2 x max_move per substep, so two layers close by at most 0.6 x the
-  // thickness in one substep and every substep pushes them apart.
-  p.max_move_mm = 0.15 * o.self_thickness_mm;
+  // thickness in one substep and every substep pushes them apart; and no faster than 120 mm/s
+  // (0.3 mm per 2.5 ms substep), whatever the substep.
+  p.max_move_mm = std::min(0.15 * o.self_thickness_mm, kMaxSpeed_mm_s * o.substep_s);
   p.stretch_limit = o.material.stretch_limit;
   p.stretch_stiffness = o.material.stretch_stiffness;
   p.friction = o.material.friction;
