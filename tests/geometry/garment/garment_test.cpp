@@ -79,7 +79,7 @@ TEST(Distortion, FlatAndStretchedGarments) {
   EXPECT_NEAR(r.area_change, 0.1, 1e-9);
 }
 
-// A 400 x 200 mm piece meshed on a 20 mm grid, lying flat in 3D at z.
+// A 400 x 200 mm piece meshed on a 20 mm grid, its 3D vertices numbered from first_3d.
 GarmentPiece grid_piece(int first_3d) {
   GarmentPiece gp;
   const int nx = 21, ny = 11;
