@@ -1,5 +1,6 @@
 // geometry/garment/distortion.cpp: strain, area change, seam lengths and body clearance of a garment.
 #include "geometry/garment/distortion.h"
+#include "geometry/common/segment.h"
 #include "geometry/common/tolerances.h"
 
 #include <algorithm>
@@ -81,13 +82,6 @@ double weighted_p95(std::vector<std::pair<double, double>>& strain_area) {
   return p95;
 }
 
-double segment_distance(Vec2 q, Vec2 a, Vec2 b) {
-  const Vec2 d = b - a;
-  const double len2 = dot(d, d);
-  const double t = len2 > 0 ? std::clamp(dot(q - a, d) / len2, 0.0, 1.0) : 0.0;
-  return norm(a + d * t - q);
-}
-
 // Per piece, the 2D seam polylines (span vertices in order) of the marked eased stitches.
 std::vector<std::vector<std::vector<Vec2>>> eased_spans(const Pattern& pattern, const Garment& g) {
   std::vector<std::vector<std::vector<Vec2>>> out(g.pieces.size());
@@ -104,9 +98,9 @@ std::vector<std::vector<std::vector<Vec2>>> eased_spans(const Pattern& pattern, 
 
 bool in_eased_region(const std::vector<std::vector<Vec2>>& lines, Vec2 q) {
   for (const auto& line : lines) {
-    if (line.size() == 1 && norm(line[0] - q) <= kEasedRegionMm) return true;
-    for (size_t k = 1; k < line.size(); ++k)
-      if (segment_distance(q, line[k - 1], line[k]) <= kEasedRegionMm) return true;
+    // A span of one vertex is a point: its segment to itself.
+    for (size_t k = 0; k < line.size(); ++k)
+      if (distance_to_segment(q, line[k], line[k + 1 < line.size() ? k + 1 : k]) <= kEasedRegionMm) return true;
   }
   return false;
 }

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "geometry/common/segment.h"
 #include "geometry/common/tolerances.h"
 
 namespace tp::geometry {
@@ -16,15 +17,6 @@ constexpr int kMaxBezierDepth = 16;
 constexpr double kSameCircleRelTolerance = 1e-6;
 
 bool finite(Vec2 p) { return std::isfinite(p.x) && std::isfinite(p.y); }
-
-/// Distance from p to the segment a-b (to a when the segment is a point).
-double distance_to_segment(Vec2 p, Vec2 a, Vec2 b) {
-  Vec2 ab = b - a;
-  double len2 = dot(ab, ab);
-  if (len2 <= 0) return norm(p - a);
-  double t = std::clamp(dot(p - a, ab) / len2, 0.0, 1.0);
-  return norm(p - (a + ab * t));
-}
 
 /// Appends the points of cubic a,b,c,d after a (adaptive de Casteljau subdivision).
 Status flatten_cubic(Vec2 a, Vec2 b, Vec2 c, Vec2 d, double tol, int depth, std::vector<Vec2>& out) {

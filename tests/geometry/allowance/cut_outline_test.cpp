@@ -1,6 +1,7 @@
 // tests/geometry/allowance/cut_outline_test.cpp: cut outlines: uniform and per-edge widths,
 // concave corners, curves, narrow parts, reflected and square corners, bad input.
 #include "geometry/allowance/cut_outline.h"
+#include "geometry/common/segment.h"
 
 #include <gtest/gtest.h>
 
@@ -31,12 +32,6 @@ bool is_simple(const Polygon& p) {
       if (segments_cross(p[i], p[(i + 1) % n], p[j], p[(j + 1) % n])) return false;
     }
   return true;
-}
-
-double distance_to_segment(Vec2 p, Vec2 a, Vec2 b) {
-  const Vec2 d = b - a;
-  const double t = std::clamp(dot(p - a, d) / dot(d, d), 0.0, 1.0);
-  return norm(p - (a + d * t));
 }
 
 TEST(CutOutline, UniformMitreOnASquareIsTheLargerSquare) {
