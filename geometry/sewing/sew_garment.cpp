@@ -9,6 +9,7 @@
 #include "geometry/common/tolerances.h"
 #include "geometry/garment/initial_placement.h"
 #include "geometry/sewing/internal/arap_solver.h"
+#include "geometry/sewing/internal/cloth_model.h"
 #include "geometry/sewing/internal/xpbd_sewing.h"
 
 namespace tp::geometry {
@@ -96,6 +97,28 @@ std::vector<Vec3> interpolate_chart(const GarmentPiece& coarse, const std::vecto
     }
     out.push_back(pos);
   }
+  return out;
+}
+
+// One stitch's segments between consecutive sewn vertex pairs: each side's pattern length, and
+// whether the stitch is plain (its sides' lengths agree within kPlainSeamSegment; eased and
+// gathered seams have no single rest length).
+struct StitchSegments {
+  std::vector<double> la, lb;
+  bool plain = false;
+};
+
+StitchSegments stitch_segments(const Pattern& pattern, const PatternMesh& meshes, size_t s) {
+  const auto& pairs = meshes.stitch_vertices[s];
+  const int pa = pattern.stitches[s].a.piece, pb = pattern.stitches[s].b.piece;
+  StitchSegments out;
+  double total_a = 0, total_b = 0;
+  for (size_t k = 0; k + 1 < pairs.size(); ++k) {
+    out.la.push_back(norm(meshes.pieces[pa].vertices_mm[pairs[k + 1][0]] - meshes.pieces[pa].vertices_mm[pairs[k][0]]));
+    out.lb.push_back(norm(meshes.pieces[pb].vertices_mm[pairs[k + 1][1]] - meshes.pieces[pb].vertices_mm[pairs[k][1]]));
+    total_a += out.la.back(), total_b += out.lb.back();
+  }
+  out.plain = std::abs(total_a - total_b) <= internal::kPlainSeamSegment * std::max(total_a, total_b);
   return out;
 }
 
@@ -226,24 +249,17 @@ Result<Garment> sew_garment(const Pattern& pattern, const PatternMesh& meshes, c
   // Seam segments keep their pattern length once sewn (the stitching does not stretch): each
   // consecutive pair of seam vertices becomes a rest-length edge, its length the mean of the two
   // pieces' 2D lengths. Eased or gathered seams (the two sides' lengths differ by more than
-  // kEasedSeam) have no single rest length and are left to the membrane.
-  constexpr double kEasedSeam = 0.01;
+  // kPlainSeamSegment) have no single rest length and are left to the membrane.
   for (size_t s = 0; s < pattern.stitches.size(); ++s) {
+    const StitchSegments seg = stitch_segments(pattern, meshes, s);
+    if (!seg.plain) continue;
     const auto& pairs = meshes.stitch_vertices[s];
-    const int pa = pattern.stitches[s].a.piece, pb = pattern.stitches[s].b.piece;
-    std::vector<double> la(pairs.size(), 0), lb(pairs.size(), 0);
-    double total_a = 0, total_b = 0;
-    for (size_t k = 0; k + 1 < pairs.size(); ++k) {
-      la[k] = norm(meshes.pieces[pa].vertices_mm[pairs[k + 1][0]] - meshes.pieces[pa].vertices_mm[pairs[k][0]]);
-      lb[k] = norm(meshes.pieces[pb].vertices_mm[pairs[k + 1][1]] - meshes.pieces[pb].vertices_mm[pairs[k][1]]);
-      total_a += la[k], total_b += lb[k];
-    }
-    if (std::abs(total_a - total_b) > kEasedSeam * std::max(total_a, total_b)) continue;
+    const int pa = pattern.stitches[s].a.piece;
     for (size_t k = 0; k + 1 < pairs.size(); ++k) {
       const int i = mc.merged_id[pairs[k][0] + offset[pa]], j = mc.merged_id[pairs[k + 1][0] + offset[pa]];
       if (i == j) continue;
       merged.edges.push_back({i, j});
-      merged.edge_rest_mm.push_back(0.5 * (la[k] + lb[k]));
+      merged.edge_rest_mm.push_back(0.5 * (seg.la[k] + seg.lb[k]));
     }
   }
 

@@ -21,7 +21,18 @@ constexpr double kUNmToGmm2s2 = 1e3;
 struct HalfEdge {
   int lo, hi, tri, opposite;
   bool forward;  ///< the triangle's winding runs lo -> hi
+  int chart_lo, chart_hi;  ///< the ends' vertices in the triangle's chart (its piece's 2D mesh)
 };
+
+// The length of edge (lo, hi) in the rest shape of triangle `t`.
+double rest_length_mm(const RestTriangle& t, int lo, int hi) {
+  int a = 0, b = 0;
+  for (int k = 0; k < 3; ++k) {
+    if (t.v[k] == lo) a = k;
+    if (t.v[k] == hi) b = k;
+  }
+  return norm(t.rest_mm[a] - t.rest_mm[b]);
+}
 
 }  // namespace
 
@@ -57,6 +68,7 @@ ClothModel build_cloth_model(const Garment& g, const ClothMaterial& m) {
   cm.vertex_piece.assign(n, -1);
   cm.vertex_rest_mm.assign(n, Vec2{});
   std::vector<int> tri_piece;
+  std::vector<std::array<int, 3>> tri_chart;  // per triangle, its corners in its piece's 2D mesh
   double edge_sum = 0;
   int edge_count = 0;
   for (size_t p = 0; p < g.pieces.size(); ++p) {
@@ -83,6 +95,7 @@ ClothModel build_cloth_model(const Garment& g, const ClothMaterial& m) {
       edge_sum += norm(e1) + norm(e2) + norm(r2 - r1), edge_count += 3;
       cm.triangles.push_back(rt);
       tri_piece.push_back(static_cast<int>(p));
+      tri_chart.push_back(t);
     }
   }
   cm.mean_edge_mm = edge_count ? edge_sum / edge_count : 0;
@@ -94,7 +107,8 @@ ClothModel build_cloth_model(const Garment& g, const ClothMaterial& m) {
   for (size_t f = 0; f < cm.triangles.size(); ++f)
     for (int k = 0; k < 3; ++k) {
       const int i = cm.triangles[f].v[k], j = cm.triangles[f].v[(k + 1) % 3], o = cm.triangles[f].v[(k + 2) % 3];
-      he.push_back({std::min(i, j), std::max(i, j), static_cast<int>(f), o, i < j});
+      const int ci = tri_chart[f][k], cj = tri_chart[f][(k + 1) % 3];
+      he.push_back({std::min(i, j), std::max(i, j), static_cast<int>(f), o, i < j, i < j ? ci : cj, i < j ? cj : ci});
     }
   std::sort(he.begin(), he.end(), [](const HalfEdge& p, const HalfEdge& q) {
     return std::tie(p.lo, p.hi, p.tri) < std::tie(q.lo, q.hi, q.tri);
@@ -104,6 +118,13 @@ ClothModel build_cloth_model(const Garment& g, const ClothMaterial& m) {
     size_t e = k;
     while (e < he.size() && he[e].lo == he[k].lo && he[e].hi == he[k].hi) ++e;
     cm.edges.push_back({he[k].lo, he[k].hi});
+    // A sewn seam segment: the edge of two charts (two pieces, or two sides of one piece, a dart).
+    if (e - k == 2 && (tri_piece[he[k].tri] != tri_piece[he[k + 1].tri] || he[k].chart_lo != he[k + 1].chart_lo ||
+                       he[k].chart_hi != he[k + 1].chart_hi)) {
+      const double la = rest_length_mm(cm.triangles[he[k].tri], he[k].lo, he[k].hi);
+      const double lb = rest_length_mm(cm.triangles[he[k + 1].tri], he[k].lo, he[k].hi);
+      if (std::abs(la - lb) <= kPlainSeamSegment * std::max(la, lb)) cm.seam_edges.push_back({he[k].lo, he[k].hi, 0.5 * (la + lb)});
+    }
     if (e - k == 2 && rigidity > 0) {
       // Orient the stencil along the first triangle's winding.
       const HalfEdge& h1 = he[k];

@@ -26,6 +26,13 @@ struct BendStencil {
   double compliance = 0;    ///< 1 / stiffness (rad^2 per g mm^2 s^-2)
 };
 
+/// A seam segment held at its pattern length: the stitching and its allowance do not stretch
+/// like the fabric beside them.
+struct SeamEdge {
+  int a = 0, b = 0;
+  double rest_mm = 0;
+};
+
 /// The cloth: vertices, masses, constraints. Mass in g, length in mm, time in s.
 struct ClothModel {
   std::vector<Vec3> x_mm;
@@ -36,6 +43,10 @@ struct ClothModel {
   std::vector<int> vertex_piece;              ///< #V piece of the vertex's first chart
   std::vector<Vec2> vertex_rest_mm;           ///< #V the vertex in that chart (pattern mm)
   double mean_edge_mm = 0;
+  /// Segments of plain seams (their sides' pattern lengths agree within kPlainSeamSegment),
+  /// projected to their rest length with the stitches. Draping: the sewn edges joining two
+  /// charts; sewing: each side's segments between consecutive stitched vertices.
+  std::vector<SeamEdge> seam_edges;
   /// Sewing only (empty when draping a sewn garment): vertex pairs a stitch draws together,
   /// and per vertex its weld group (the lowest vertex stitched to it, transitively; itself if
   /// none). Self-collision treats vertices of one group as one vertex, so seam sides can meet.
@@ -61,9 +72,15 @@ struct ClothModel {
   std::vector<std::vector<int>> seam_zone_active;
 };
 
+/// Two sides of a seam segment whose pattern lengths differ by more than this share are eased
+/// or gathered: no one rest length, left to the membrane.
+inline constexpr double kPlainSeamSegment = 0.01;
+
 /// Builds the model of `g` (its 3D positions and its charts' rest shapes). Triangles a seam
 /// collapsed are left out. Bending across an edge inside a piece rests flat; across a seam it
-/// rests at the sewn angle (the seam allowance holds it). Stiffness from `m`.
+/// rests at the sewn angle (the seam allowance holds it). An edge joining two charts (a sewn
+/// seam segment) whose lengths in them agree within kPlainSeamSegment becomes a SeamEdge at their
+/// mean. Stiffness from `m`.
 ClothModel build_cloth_model(const Garment& g, const ClothMaterial& m);
 
 /// Signed dihedral angle of stencil (a, b, c, d) at `x` (0 when flat) and, if grad is given,
