@@ -122,6 +122,26 @@ StitchSegments stitch_segments(const Pattern& pattern, const PatternMesh& meshes
   return out;
 }
 
+// The longer sides of the stitches that are not plain (eased or gathered), for XPBD sewing.
+std::vector<internal::GatheredSide> gathered_sides(const Pattern& pattern, const PatternMesh& meshes,
+                                                   const std::vector<int>& offset) {
+  std::vector<internal::GatheredSide> out;
+  for (size_t s = 0; s < pattern.stitches.size(); ++s) {
+    const StitchSegments seg = stitch_segments(pattern, meshes, s);
+    if (seg.plain) continue;
+    double total_a = 0, total_b = 0;
+    for (double l : seg.la) total_a += l;
+    for (double l : seg.lb) total_b += l;
+    const int side = total_a >= total_b ? 0 : 1;
+    internal::GatheredSide g;
+    g.piece = side == 0 ? pattern.stitches[s].a.piece : pattern.stitches[s].b.piece;
+    g.ratio = std::min(total_a, total_b) / std::max(total_a, total_b);
+    for (const auto& pr : meshes.stitch_vertices[s]) g.vertices.push_back(pr[side] + offset[g.piece]);
+    out.push_back(std::move(g));
+  }
+  return out;
+}
+
 // The garment of the merged cloth: every piece's chart and its vertices' merged ids.
 Garment finish_garment(const Pattern& pattern, const PatternMesh& meshes, const std::vector<int>& offset,
                        MergedCloth& mc, SewStats& st, std::chrono::steady_clock::time_point t0) {
@@ -213,6 +233,7 @@ Result<Garment> sew_garment(const Pattern& pattern, const PatternMesh& meshes, c
     xp.self_thickness_mm = options.xpbd_self_thickness_mm;
     xp.threads = options.threads;
     if (options.on_progress) xp.on_progress = options.on_progress;
+    xp.gathered = gathered_sides(pattern, meshes, offset);
     auto r = internal::sew_pieces_xpbd(meshes, offset, cloth.springs, spring_stitch, body, xp, cloth.x_mm, cancel);
     if (!r) return fail(r.error().with_context("pattern '" + pattern.name + "': sewing"));
     st.sewing_iterations = r->substeps;

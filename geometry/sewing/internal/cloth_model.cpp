@@ -114,6 +114,11 @@ ClothModel build_cloth_model(const Garment& g, const ClothMaterial& m) {
     return std::tie(p.lo, p.hi, p.tri) < std::tie(q.lo, q.hi, q.tri);
   });
   const double rigidity = m.bending_rigidity_uN_m * kUNmToGmm2s2;
+  struct GatheredEnd {
+    int piece, vertex;
+    double ratio;
+  };
+  std::vector<GatheredEnd> gathered;
   for (size_t k = 0; k < he.size();) {
     size_t e = k;
     while (e < he.size() && he[e].lo == he[k].lo && he[e].hi == he[k].hi) ++e;
@@ -123,7 +128,13 @@ ClothModel build_cloth_model(const Garment& g, const ClothMaterial& m) {
                        he[k].chart_hi != he[k + 1].chart_hi)) {
       const double la = rest_length_mm(cm.triangles[he[k].tri], he[k].lo, he[k].hi);
       const double lb = rest_length_mm(cm.triangles[he[k + 1].tri], he[k].lo, he[k].hi);
-      if (std::abs(la - lb) <= kPlainSeamSegment * std::max(la, lb)) cm.seam_edges.push_back({he[k].lo, he[k].hi, 0.5 * (la + lb)});
+      if (std::abs(la - lb) <= kPlainSeamSegment * std::max(la, lb)) {
+        cm.seam_edges.push_back({he[k].lo, he[k].hi, 0.5 * (la + lb)});
+      } else {
+        const HalfEdge& longer = la > lb ? he[k] : he[k + 1];
+        gathered.push_back({tri_piece[longer.tri], he[k].lo, std::min(la, lb) / std::max(la, lb)});
+        gathered.push_back({tri_piece[longer.tri], he[k].hi, std::min(la, lb) / std::max(la, lb)});
+      }
     }
     if (e - k == 2 && rigidity > 0) {
       // Orient the stencil along the first triangle's winding.
@@ -146,7 +157,26 @@ ClothModel build_cloth_model(const Garment& g, const ClothMaterial& m) {
     }
     k = e;
   }
+  // The longer sides of eased seams: their piece's triangles at each end vertex are gathered.
+  std::vector<std::vector<const GatheredEnd*>> gathered_at(n);
+  for (const GatheredEnd& end : gathered) gathered_at[end.vertex].push_back(&end);
+  for (size_t f = 0; f < cm.triangles.size(); ++f)
+    for (int v : cm.triangles[f].v)
+      for (const GatheredEnd* end : gathered_at[v])
+        if (end->piece == tri_piece[f]) {
+          double& ms = cm.triangles[f].min_stretch;
+          ms = ms > 0 ? std::min(ms, end->ratio * kGatherSlack) : end->ratio * kGatherSlack;
+        }
   return cm;
+}
+
+void mark_gathered(std::vector<RestTriangle>& triangles, const std::vector<int>& seam_vertices, double min_stretch) {
+  for (RestTriangle& t : triangles)
+    for (int v : t.v)
+      if (std::binary_search(seam_vertices.begin(), seam_vertices.end(), v)) {
+        t.min_stretch = t.min_stretch > 0 ? std::min(t.min_stretch, min_stretch) : min_stretch;
+        break;
+      }
 }
 
 }  // namespace tp::geometry::internal

@@ -17,6 +17,10 @@ struct RestTriangle {
   std::array<Vec2, 3> rest_mm{};   ///< corners minus their centroid, pattern mm
   double dm_inv[2][2] = {};        ///< inverse of [r1 - r0, r2 - r0]
   double area_mm2 = 0;
+  /// Gathered: the triangle lies on the longer side of an eased or gathered seam, whose excess
+  /// the seam line takes up in pleats finer than the mesh. Compressions down to this stretch are
+  /// kept (no pull back to rest); 0: the material's limit.
+  double min_stretch = 0;
 };
 
 /// Two triangles sharing edge (a, b): c opposite in the first, d in the second.
@@ -76,11 +80,21 @@ struct ClothModel {
 /// or gathered: no one rest length, left to the membrane.
 inline constexpr double kPlainSeamSegment = 0.01;
 
+/// A gathered triangle may compress a little beyond its seam's ratio: the gathers are not even
+/// along a seam's segments.
+inline constexpr double kGatherSlack = 0.9;
+
+/// Marks the triangles of `piece_of_triangle[t] == piece` that have a vertex in `seam_vertices`
+/// (sorted) as gathered down to `min_stretch` (the smallest mark wins).
+void mark_gathered(std::vector<RestTriangle>& triangles, const std::vector<int>& seam_vertices, double min_stretch);
+
 /// Builds the model of `g` (its 3D positions and its charts' rest shapes). Triangles a seam
 /// collapsed are left out. Bending across an edge inside a piece rests flat; across a seam it
 /// rests at the sewn angle (the seam allowance holds it). An edge joining two charts (a sewn
 /// seam segment) whose lengths in them agree within kPlainSeamSegment becomes a SeamEdge at their
-/// mean. Stiffness from `m`.
+/// mean; where they differ more (an eased or gathered seam), the triangles of the longer side's
+/// piece at its ends are gathered (RestTriangle::min_stretch, the two lengths' ratio). Stiffness
+/// from `m`.
 ClothModel build_cloth_model(const Garment& g, const ClothMaterial& m);
 
 /// Signed dihedral angle of stencil (a, b, c, d) at `x` (0 when flat) and, if grad is given,

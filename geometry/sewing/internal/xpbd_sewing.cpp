@@ -37,6 +37,11 @@ Result<XpbdSewStats> sew_pieces_xpbd(const PatternMesh& meshes, const std::vecto
   }
   ClothModel cloth = build_cloth_model(open, p.material);
   cloth.stitches = stitches;
+  for (const GatheredSide& side : p.gathered) {
+    std::vector<int> seam = side.vertices;
+    std::sort(seam.begin(), seam.end());
+    mark_gathered(cloth.triangles, seam, side.ratio * kGatherSlack);
+  }
   // Weld groups: the lowest vertex of each transitively stitched set.
   const int n = static_cast<int>(x_mm.size());
   std::vector<int> parent(n);

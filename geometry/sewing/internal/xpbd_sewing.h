@@ -14,6 +14,14 @@
 
 namespace tp::geometry::internal {
 
+/// The longer side of an eased or gathered stitch: its stitched vertices in seam order (global
+/// numbering) and the ratio of the shorter side's length to its own (< 1).
+struct GatheredSide {
+  int piece = 0;
+  std::vector<int> vertices;
+  double ratio = 1;
+};
+
 /// Settings of an XPBD sewing run (lengths mm, time s).
 struct XpbdSewParams {
   ClothMaterial material;        ///< the fabric the pieces are simulated in while sewn
@@ -25,6 +33,10 @@ struct XpbdSewParams {
   double self_thickness_mm = 2;  ///< distance kept between layers
   double damping_per_s = 10;
   int threads = 2;
+  /// Eased and gathered stitches' longer sides: their triangles at the seam may compress to the
+  /// ratio (the pleats of the seam line), so the longer side is gathered onto the shorter and the
+  /// cloth beyond those triangles, which may not compress, buckles into folds.
+  std::vector<GatheredSide> gathered;
   std::function<void(double fraction)> on_progress;
 };
 

@@ -127,6 +127,8 @@ void project_triangle(const RestTriangle& t, const std::vector<double>& w, doubl
   }
   // Target stretches: inside the limit, pulled towards rest by the stiffness.
   auto target = [&](double sv) {
+    // Gathered: the seam's pleats take the compression.
+    if (sv < 1 && t.min_stretch > 0) return std::max(sv, t.min_stretch);
     const double clamped = std::clamp(sv, 1 - limit, 1 + limit);
     return clamped + stiffness * (1 - clamped);
   };

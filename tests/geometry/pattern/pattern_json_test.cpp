@@ -30,6 +30,21 @@ std::string error_of(const std::string& text) {
   return r ? std::string() : r.error().message;
 }
 
+TEST(PatternJson, TheGatheredSkirtExampleIsValidWithItsEaseAndNotWithout) {
+  auto r = load_pattern_json(tp::test::source_dir() / "examples/patterns/gathered_skirt.json");
+  ASSERT_TRUE(r.has_value()) << r.error().what();
+  Pattern p = *r;
+  // The skirt's tops (570 mm front, 285 mm back halves) gathered into 400 and 200 mm of the band.
+  const Stitch* front = find_stitch(p, "skirt_front", "top", "waistband", "bottom");
+  ASSERT_NE(front, nullptr);
+  EXPECT_DOUBLE_EQ(front->ease_ratio, 1.45);
+  EXPECT_TRUE(validate_pattern(p).has_value());
+  for (Stitch& s : p.stitches) s.ease_ratio = 0;
+  auto unmarked = validate_pattern(p);
+  ASSERT_FALSE(unmarked.has_value());
+  EXPECT_NE(unmarked.error().message.find("skirt_front"), std::string::npos) << unmarked.error().message;
+}
+
 TEST(PatternJson, ReadsTheExampleTeeIntoPhysicalPieces) {
   auto r = load_pattern_json(tee_path());
   ASSERT_TRUE(r.has_value()) << r.error().what();
