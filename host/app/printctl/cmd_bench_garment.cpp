@@ -184,7 +184,7 @@ void bench_one(const std::string& name, geometry::Pattern pattern, const geometr
   // The drape in the bench's fabric: its time and whether it stayed untangled and outside the body.
   double drape_seconds = 0;
   int drape_self = -1, drape_inside = -1;
-  double drape_strain_p95 = -1, drape_strain_p95_plain = -1, drape_simulated_s = 0;
+  double drape_strain_p95 = -1, drape_strain_p95_plain = -1, drape_simulated_s = 0, drape_seam_plain = -1;
   bool drape_settled = false;
   if (a.drape) {
     geometry::DrapeOptions d;
@@ -203,9 +203,15 @@ void bench_one(const std::string& name, geometry::Pattern pattern, const geometr
     drape_inside = dr.inside_body;
     drape_strain_p95 = dr.strain_p95;
     drape_strain_p95_plain = dr.strain_p95_plain;
-    if (!a.out.empty())
+    drape_seam_plain = dr.seam_len_diff_max_plain;
+    if (!a.out.empty()) {
       if (auto st = write_garment_files(a.out, name + "_draped", pattern, *dg, body.mesh(), name + "_body"); !st)
         die(st.error().what(), 1);
+      if (auto st =
+              write_text_file(std::filesystem::path(a.out) / (name + "_draped_seams.txt"), seam_lines(pattern, dr));
+          !st)
+        die(st.error().what(), 1);
+    }
   }
   (fit.pass ? tally.pass : tally.fail)++;
   std::string failed;
@@ -219,7 +225,7 @@ void bench_one(const std::string& name, geometry::Pattern pattern, const geometr
       "strain_mean=%.4f strain_p95=%.4f seam_len_diff_max=%.4f aligned=%s seconds=%.2f drape_seconds=%.2f "
       "drape_self_intersections=%d drape_inside_body=%d drape_strain_p95=%.4f drape_simulated_s=%.3f "
       "drape_settled=%s gathered_fraction=%.3f strain_p95_plain=%.4f strain_p95_eased=%.4f eased_area=%.3f "
-      "seam_len_diff_max_plain=%.4f drape_strain_p95_plain=%.4f checks=%s%s%s\n",
+      "seam_len_diff_max_plain=%.4f drape_strain_p95_plain=%.4f drape_seam_len_diff_max_plain=%.4f checks=%s%s%s\n",
       name.c_str(), o.solver == geometry::SewSolver::kXpbd ? "xpbd" : "arap", stats.levels, r.vertices,
       pattern.stitches.size(), suggested, fit.stitch_gap_max_mm, fit.stitch_gap_p95_mm, fit.self_intersections,
       fit.inside_body, r.min_clearance_mm, fit.body_distance_p50_mm, fit.body_distance_p95_mm, fit.off_body,
@@ -230,7 +236,8 @@ void bench_one(const std::string& name, geometry::Pattern pattern, const geometr
       : drape_settled ? "yes"
                       : "no",
       gathered_fraction(r), r.strain_p95_plain, r.strain_p95_eased, r.eased_area_fraction, r.seam_len_diff_max_plain,
-      drape_strain_p95_plain, fit.pass ? "pass" : "fail", failed.empty() ? "" : " failed=", failed.c_str());
+      drape_strain_p95_plain, drape_seam_plain, fit.pass ? "pass" : "fail",
+      failed.empty() ? "" : " failed=", failed.c_str());
   for (const auto& f : fit.failures) std::printf("  %s: %s (look at %s_%s.png)\n", f.check.c_str(), f.message.c_str(), name.c_str(), f.view.c_str());
   std::fflush(stdout);
 }
