@@ -62,6 +62,20 @@ void project_bend(const BendStencil& s, const std::vector<double>& w, double dt2
   for (int k = 0; k < 4; ++k) x[id[k]] += g[k] * (w[id[k]] * lambda);
 }
 
+// Puts triangle `t`'s corners at its rest shape mapped by the gradient [g0 g1], placed at the
+// corners' centre of mass (current and rest alike), so the triangle's momentum is kept and no
+// corner overshoots its goal. The corners' inverse masses must be positive.
+void place_rest_shape(const RestTriangle& t, const std::vector<double>& w, const Vec3& g0, const Vec3& g1,
+                      std::vector<Vec3>& x) {
+  const double m0 = 1 / w[t.v[0]], m1 = 1 / w[t.v[1]], m2 = 1 / w[t.v[2]], msum = m0 + m1 + m2;
+  const Vec3 c = (x[t.v[0]] * m0 + x[t.v[1]] * m1 + x[t.v[2]] * m2) / msum;
+  const Vec2 rc = (t.rest_mm[0] * m0 + t.rest_mm[1] * m1 + t.rest_mm[2] * m2) / msum;
+  for (int k = 0; k < 3; ++k) {
+    const Vec2 r = t.rest_mm[k] - rc;
+    x[t.v[k]] = c + g0 * r.x + g1 * r.y;
+  }
+}
+
 // Plain seams' segments back to their pattern length (hard distance constraints, in order).
 // After the strain passes alone the seams came out 1-3 % longer than cut (shirt_mean's underarm
 // seams 312 mm sewn 318-319 mm), since each pass leaves the last triangles it touched stretched
@@ -103,9 +117,23 @@ void project_triangle(const RestTriangle& t, const std::vector<double>& w, doubl
   // F = [d1 d2] Dm^-1, columns f0 and f1.
   const Vec3 f0 = d1 * t.dm_inv[0][0] + d2 * t.dm_inv[1][0];
   const Vec3 f1 = d1 * t.dm_inv[0][1] + d2 * t.dm_inv[1][1];
-  // Singular values and right vectors from the eigen-decomposition of F^T F.
   const double a = dot(f0, f0), b = dot(f0, f1), d = dot(f1, f1);
   const double tr = a + d, det = a * d - b * b;
+  if (stiffness >= 1 && t.min_stretch <= 0 && det > kRelativeSingular * kRelativeSingular * tr * tr) {
+    // Full stiffness: every stretch's target is 1, so the target gradient is F's rotation,
+    // F (F^T F)^(-1/2), with the 2x2 square root in closed form: sqrt(C) = (C + sqrt(det C) I) /
+    // sqrt(tr C + 2 sqrt(det C)), whose determinant is sqrt(det C). The same goal as the general
+    // path below with two square roots and one division instead of four and five (the strain
+    // passes were 38 % of a garment's sewing and drape).
+    if (w[t.v[0]] <= 0 || w[t.v[1]] <= 0 || w[t.v[2]] <= 0) return;
+    const double root_det = std::sqrt(det);
+    const double scale = 1 / (root_det * std::sqrt(tr + 2 * root_det));
+    const Vec3 g0 = (f0 * (d + root_det) - f1 * b) * scale;
+    const Vec3 g1 = (f1 * (a + root_det) - f0 * b) * scale;
+    place_rest_shape(t, w, g0, g1, x);
+    return;
+  }
+  // Singular values and right vectors from the eigen-decomposition of F^T F.
   const double disc = std::sqrt(std::max(tr * tr / 4 - det, 0.0));
   const double l1 = tr / 2 + disc, l2 = std::max(tr / 2 - disc, 0.0);
   if (l1 < kZeroStretch) return;
@@ -137,16 +165,8 @@ void project_triangle(const RestTriangle& t, const std::vector<double>& w, doubl
   // Target gradient U diag(t) V^T applied to the rest corners around the current centroid.
   const Vec3 g0 = u1 * (t1 * v1.x) + u2 * (t2 * v2.x);
   const Vec3 g1 = u1 * (t1 * v1.y) + u2 * (t2 * v2.y);
-  // The rest shape placed at the corners' centre of mass (current and rest alike), so the
-  // triangle's momentum is kept and no corner overshoots its goal.
   if (w[t.v[0]] <= 0 || w[t.v[1]] <= 0 || w[t.v[2]] <= 0) return;
-  const double m0 = 1 / w[t.v[0]], m1 = 1 / w[t.v[1]], m2 = 1 / w[t.v[2]], msum = m0 + m1 + m2;
-  const Vec3 c = (x0 * m0 + x1 * m1 + x2 * m2) / msum;
-  const Vec2 rc = (t.rest_mm[0] * m0 + t.rest_mm[1] * m1 + t.rest_mm[2] * m2) / msum;
-  for (int k = 0; k < 3; ++k) {
-    const Vec2 r = t.rest_mm[k] - rc;
-    x[t.v[k]] = c + g0 * r.x + g1 * r.y;
-  }
+  place_rest_shape(t, w, g0, g1, x);
 }
 
 Result<XpbdStats> run_xpbd(ClothModel& cloth, const BodySdf& body, const XpbdParams& p, const CancelToken* cancel) {
