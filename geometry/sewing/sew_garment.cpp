@@ -7,6 +7,7 @@
 #include <numeric>
 
 #include "geometry/common/tolerances.h"
+#include "geometry/garment/fit_checks.h"
 #include "geometry/garment/initial_placement.h"
 #include "geometry/sewing/internal/arap_solver.h"
 #include "geometry/sewing/internal/cloth_model.h"
@@ -199,10 +200,11 @@ Result<Garment> sew_garment(const Pattern& pattern, const PatternMesh& meshes, c
   // the substeps needed do not depend on them), one for ARAP (whose coarse level tangled). A coarse
   // level with edges over kMaxCoarseEdge_mm cuts across the body's curves: GarmentCode's hoody_mean
   // at the studio's 25 mm edge ended with 7 vertices inside mean_female from a 50 mm coarse level,
-  // and none sewn on one level (shirt_mean: 52 and 0), so a fine mesh that coarse sews on one.
+  // and none sewn on one level (shirt_mean: 52 and 0), so the coarse edge is at most that, and a
+  // fine mesh that coarse sews on one.
   const double coarse_factor = options.coarse_factor >= 0 ? options.coarse_factor
-                               : options.solver == SewSolver::kXpbd && options.target_edge_mm * 2.0 <= kMaxCoarseEdge_mm
-                                   ? 2.0
+                               : options.solver == SewSolver::kXpbd
+                                   ? std::min(2.0, kMaxCoarseEdge_mm / options.target_edge_mm)
                                    : 0.0;
   const bool two_level = coarse_factor >= 1.5;
   st.levels = two_level ? 2 : 1;
@@ -215,6 +217,25 @@ Result<Garment> sew_garment(const Pattern& pattern, const PatternMesh& meshes, c
     SewStats coarse_stats;
     auto coarse = sew_garment(pattern, body, coarse_opt, &coarse_stats, cancel);
     if (!coarse) return fail(coarse.error());
+    // A default coarse level that left a seam open or passes through itself (a mesh too coarse
+    // for a narrow place: js_mean_all's crotch at 36 mm edges, 2.4 mm open; at 32 mm, 11
+    // intersecting pairs, none at 31.8 mm) is not carried over: sewn again on one level.
+    double coarse_gap = 0;
+    for (const auto& gaps : coarse_stats.stitch_gap_mm)
+      for (double g : gaps) coarse_gap = std::max(coarse_gap, g);
+    const int coarse_crossings = options.coarse_factor < 0 ? count_self_intersections(*coarse) : 0;
+    if (options.coarse_factor < 0 &&
+        (coarse_gap > kCoarseFallbackGap * options.xpbd_done_gap_mm || coarse_crossings > 0)) {
+      SewOptions one_level = options;
+      one_level.coarse_factor = 0;
+      auto g = sew_garment(pattern, meshes, body, one_level, stats, cancel);
+      if (stats) {
+        stats->coarse_fallback_gap_mm = coarse_gap;
+        stats->coarse_fallback_self_intersections = coarse_crossings;
+        stats->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      }
+      return g;
+    }
     st.sewing_iterations = coarse_stats.sewing_iterations;
     st.stitch_gap_mm = std::move(coarse_stats.stitch_gap_mm);
     for (size_t p = 0; p < pattern.pieces.size(); ++p) {
@@ -286,7 +307,18 @@ Result<Garment> sew_garment(const Pattern& pattern, const PatternMesh& meshes, c
 
   // Phase B: relax the sewn garment under gravity until it settles (ARAP sewing only: the
   // XPBD-sewn garment goes to the drape as sewn, untangled).
-  if (options.solver == SewSolver::kXpbd) return finish_garment(pattern, meshes, offset, mc, st, t0);
+  if (options.solver == SewSolver::kXpbd) {
+    if (!two_level || options.xpbd_relax_s <= 0) return finish_garment(pattern, meshes, offset, mc, st, t0);
+    // Two levels: the fine garment lies on the coarse one, whose flat triangles cut the body's
+    // curves and whose seams are the coarse level's; a short settle on the fine level without
+    // weight lets its own contact, strain and seam constraints finish it.
+    Garment fine = finish_garment(pattern, meshes, offset, mc, st, t0);
+    auto settled = internal::settle_fine_garment(fine, body, options, cancel);
+    if (!settled) return fail(settled.error().with_context("pattern '" + pattern.name + "': settling the fine level"));
+    st.relax_iterations = settled->substeps;
+    st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return fine;
+  }
   params.spring_weight = 0;
   params.edge_weight = options.seam_edge_weight;
   params.gravity_per_mm = options.gravity_per_mm;

@@ -124,4 +124,25 @@ Result<XpbdSewStats> sew_pieces_xpbd(const PatternMesh& meshes, const std::vecto
       .substeps = r->substeps, .simulated_s = r->simulated_s, .stitch_gap_max_mm = r->stitch_gap_max_mm};
 }
 
+Result<XpbdSewStats> settle_fine_garment(Garment& g, const BodySdf& body, const SewOptions& o,
+                                         const CancelToken* cancel) {
+  const XpbdSewParams defaults;
+  ClothModel cloth = build_cloth_model(g, defaults.material);
+  XpbdParams xp;
+  xp.duration_s = o.xpbd_relax_s;
+  xp.gravity_mm_s2 = 0;
+  xp.damping_per_s = defaults.damping_per_s;
+  xp.body_thickness_mm = o.clearance_mm;
+  xp.self_thickness_mm = o.xpbd_self_thickness_mm;
+  xp.max_move_mm = 0.15 * o.xpbd_self_thickness_mm;
+  xp.stretch_limit = defaults.material.stretch_limit;
+  xp.stretch_stiffness = defaults.material.stretch_stiffness;
+  xp.friction = 0;
+  xp.threads = o.threads;
+  auto r = run_xpbd(cloth, body, xp, cancel);
+  if (!r) return fail(r.error());
+  g.vertices_mm = std::move(cloth.x_mm);
+  return XpbdSewStats{.substeps = r->substeps, .simulated_s = r->simulated_s, .stitch_gap_max_mm = 0};
+}
+
 }  // namespace tp::geometry::internal

@@ -11,6 +11,7 @@
 #include "geometry/common/error.h"
 #include "geometry/mesh/mesh_pattern.h"
 #include "geometry/sewing/cloth_material.h"
+#include "geometry/sewing/sew_garment.h"
 
 namespace tp::geometry::internal {
 
@@ -60,5 +61,12 @@ struct XpbdSewStats {
                                                    const std::vector<int>& pair_stitch, const BodySdf& body,
                                                    const XpbdSewParams& p, std::vector<Vec3>& x_mm,
                                                    const CancelToken* cancel);
+
+/// Settles a sewn garment (merged seams) on `body` without weight or friction for at most
+/// `o.xpbd_relax_s` (XPBD in the sewing's steps: strain, seam segments, bending, self-collision,
+/// body contact at `o.clearance_mm`), stopping once its RMS speed stays below the drape's settle
+/// speed. Positions change in place. Fails with kSewing if the solver diverges, kCancelled.
+[[nodiscard]] Result<XpbdSewStats> settle_fine_garment(Garment& g, const BodySdf& body, const SewOptions& o,
+                                                       const CancelToken* cancel);
 
 }  // namespace tp::geometry::internal
