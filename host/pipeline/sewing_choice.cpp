@@ -10,9 +10,8 @@ bool placed_by_role(const geometry::Pattern& pattern) {
 }
 
 SewingChoice auto_sewing(const geometry::Pattern& pattern, bool garmentcode) {
-  if (placed_by_role(pattern)) return {geometry::SewSolver::kXpbd, true};
-  if (garmentcode) return {geometry::SewSolver::kXpbd, false};
-  return {geometry::SewSolver::kArap, false};
+  if (placed_by_role(pattern) || garmentcode) return {geometry::SewSolver::kXpbd};
+  return {geometry::SewSolver::kArap};
 }
 
 }  // namespace tp::host

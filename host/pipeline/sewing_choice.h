@@ -9,17 +9,14 @@ namespace tp::host {
 
 struct SewingChoice {
   geometry::SewSolver solver = geometry::SewSolver::kArap;
-  bool one_level = false;  ///< sew on one level (no coarse mesh first)
 };
 
 /// Whether a piece of the pattern comes without a 3D placement (it is placed by its role).
 [[nodiscard]] bool placed_by_role(const geometry::Pattern& pattern);
 
-/// What "auto" sews `pattern` with: XPBD on one level when a piece comes without a 3D placement
-/// (FreeSewing, DXF, native without one: the coarse level's shape, carried to the fine mesh, left
-/// bella 42's bodice hem 48 vertices inside the form, one level none), XPBD (its default levels)
-/// for a GarmentCode pattern, ARAP otherwise (the samples and native patterns placed for the
-/// dress form: XPBD leaves the sample dress's side seams open). docs/garments.md has the figures.
+/// What "auto" sews `pattern` with: XPBD (its default levels) when a piece comes without a 3D
+/// placement (FreeSewing, DXF, native without one) or for a GarmentCode pattern, ARAP otherwise
+/// (the samples and native patterns placed for the dress form). docs/garments.md has the figures.
 [[nodiscard]] SewingChoice auto_sewing(const geometry::Pattern& pattern, bool garmentcode);
 
 }  // namespace tp::host

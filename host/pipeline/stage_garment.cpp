@@ -150,8 +150,6 @@ Status stage_garment(PipelineState& ps) {
     opt.target_edge_mm = ps.job.garment.mesh_edge_mm;
     const std::string solver = sewing_solver(ps.job.garment, part.pattern);
     opt.solver = solver == "xpbd" ? geometry::SewSolver::kXpbd : geometry::SewSolver::kArap;
-    if (ps.job.garment.sewing == "auto" && auto_sewing(part.pattern, garmentcode_pattern(ps.job.garment)).one_level)
-      opt.coarse_factor = 0;
     opt.on_progress = garment_progress(ps, 0.0, ps.job.garment.drape ? 0.5 : 1.0, "sewing");
     // Where the pieces start (the solver places them the same way): inside the body as placed,
     // and after the push out of it.
