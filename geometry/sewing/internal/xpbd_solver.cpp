@@ -20,6 +20,10 @@ constexpr double kZeroStretch = 1e-20;
 
 /// A triangle's second singular value below this share of its first is degenerate (collapsed).
 constexpr double kRelativeSingular = 1e-9;
+/// Sweeps of the plain seams' segments after each strain pass, each forward then back along them
+/// (measured at 10,000 vertices, draped seams' largest difference: hoody_mean 1.4 % with one
+/// forward sweep, 0.8 % with two both ways, 0.5 % with four; shirt_mean 8.5 %, 5.3 %, 5.2 %).
+constexpr int kSeamSweeps = 4;
 /// A strain-limit correction along an edge shorter than this (mm) has no direction.
 constexpr double kZeroLength_mm = 1e-12;
 /// The strain projections run in rounds of 2^3 vertex-disjoint blocks (whatever the thread
@@ -79,16 +83,21 @@ void place_rest_shape(const RestTriangle& t, const std::vector<double>& w, const
 // Plain seams' segments back to their pattern length (hard distance constraints, in order).
 // After the strain passes alone the seams came out 1-3 % longer than cut (shirt_mean's underarm
 // seams 312 mm sewn 318-319 mm), since each pass leaves the last triangles it touched stretched
-// by their neighbours.
+// by their neighbours. One sweep along a seam's chain of segments leaves each pulled by the next
+// (hoody_mean's draped seams 1.4 % long); kSeamSweeps forward and back, 0.5 %.
 void project_seam_edges(const ClothModel& cloth, std::vector<Vec3>& x) {
-  for (const SeamEdge& e : cloth.seam_edges) {
+  auto project = [&](const SeamEdge& e) {
     const Vec3 d = x[e.a] - x[e.b];
     const double len = norm(d);
     const double wsum = cloth.inv_mass[e.a] + cloth.inv_mass[e.b];
-    if (wsum <= 0 || len < kZeroLength_mm) continue;
+    if (wsum <= 0 || len < kZeroLength_mm) return;
     const Vec3 corr = d * ((len - e.rest_mm) / (len * wsum));
     x[e.a] -= corr * cloth.inv_mass[e.a];
     x[e.b] += corr * cloth.inv_mass[e.b];
+  };
+  for (int sweep = 0; sweep < kSeamSweeps; ++sweep) {
+    for (const SeamEdge& e : cloth.seam_edges) project(e);
+    for (auto it = cloth.seam_edges.rbegin(); it != cloth.seam_edges.rend(); ++it) project(*it);
   }
 }
 
