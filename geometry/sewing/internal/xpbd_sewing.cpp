@@ -18,6 +18,23 @@ int find_root(std::vector<int>& parent, int i) {
   return i;
 }
 
+// The solver's settings while sewing: no weight, no friction (seams slide over the body while
+// they close), moves within 0.15 of the layer thickness per substep.
+XpbdParams sewing_steps(const XpbdSewParams& p) {
+  XpbdParams xp;
+  xp.duration_s = p.duration_s;
+  xp.gravity_mm_s2 = 0;
+  xp.damping_per_s = p.damping_per_s;
+  xp.body_thickness_mm = p.clearance_mm;
+  xp.self_thickness_mm = p.self_thickness_mm;
+  xp.max_move_mm = 0.15 * p.self_thickness_mm;
+  xp.stretch_limit = p.material.stretch_limit;
+  xp.stretch_stiffness = p.material.stretch_stiffness;
+  xp.friction = 0;
+  xp.threads = p.threads;
+  return xp;
+}
+
 }  // namespace
 
 Result<XpbdSewStats> sew_pieces_xpbd(const PatternMesh& meshes, const std::vector<int>& offset,
@@ -102,20 +119,10 @@ Result<XpbdSewStats> sew_pieces_xpbd(const PatternMesh& meshes, const std::vecto
     }
   }
 
-  XpbdParams xp;
-  xp.duration_s = p.duration_s;
-  xp.gravity_mm_s2 = 0;
-  xp.damping_per_s = p.damping_per_s;
-  xp.body_thickness_mm = p.clearance_mm;
-  xp.self_thickness_mm = p.self_thickness_mm;
-  xp.max_move_mm = 0.15 * p.self_thickness_mm;
-  xp.stretch_limit = p.material.stretch_limit;
-  xp.stretch_stiffness = p.material.stretch_stiffness;
-  xp.friction = 0;  // seams slide over the body while they close
+  XpbdParams xp = sewing_steps(p);
   xp.stitch_close_mm_s = p.close_mm_s;
   xp.stitch_done_mm = p.done_gap_mm;
   xp.stitch_stall_s = p.stall_s;
-  xp.threads = p.threads;
   xp.on_progress = p.on_progress;
   auto r = run_xpbd(cloth, body, xp, cancel);
   if (!r) return fail(r.error().with_context("XPBD sewing"));
@@ -126,20 +133,13 @@ Result<XpbdSewStats> sew_pieces_xpbd(const PatternMesh& meshes, const std::vecto
 
 Result<XpbdSewStats> settle_fine_garment(Garment& g, const BodySdf& body, const SewOptions& o,
                                          const CancelToken* cancel) {
-  const XpbdSewParams defaults;
-  ClothModel cloth = build_cloth_model(g, defaults.material);
-  XpbdParams xp;
-  xp.duration_s = o.xpbd_relax_s;
-  xp.gravity_mm_s2 = 0;
-  xp.damping_per_s = defaults.damping_per_s;
-  xp.body_thickness_mm = o.clearance_mm;
-  xp.self_thickness_mm = o.xpbd_self_thickness_mm;
-  xp.max_move_mm = 0.15 * o.xpbd_self_thickness_mm;
-  xp.stretch_limit = defaults.material.stretch_limit;
-  xp.stretch_stiffness = defaults.material.stretch_stiffness;
-  xp.friction = 0;
-  xp.threads = o.threads;
-  auto r = run_xpbd(cloth, body, xp, cancel);
+  XpbdSewParams p;
+  p.duration_s = o.xpbd_relax_s;
+  p.clearance_mm = o.clearance_mm;
+  p.self_thickness_mm = o.xpbd_self_thickness_mm;
+  p.threads = o.threads;
+  ClothModel cloth = build_cloth_model(g, p.material);
+  auto r = run_xpbd(cloth, body, sewing_steps(p), cancel);
   if (!r) return fail(r.error());
   g.vertices_mm = std::move(cloth.x_mm);
   return XpbdSewStats{.substeps = r->substeps, .simulated_s = r->simulated_s, .stitch_gap_max_mm = 0};
