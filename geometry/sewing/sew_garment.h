@@ -26,7 +26,8 @@ struct SewOptions {
   /// solver's default). XPBD sewing: 2 by default, less where the coarse edge would exceed
   /// kMaxCoarseEdge_mm, one level below 1.5 (its self-collision keeps the coarse garment
   /// untangled; the fine garment is its interpolation, settled for xpbd_relax_s on its own); a
-  /// default coarse level that leaves a seam open is discarded for one level. ARAP: off by
+  /// default coarse level that leaves a seam open or passes through itself is discarded for one
+  /// level (SewStats::coarse_fallback_*). ARAP: off by
   /// default: on GarmentCode's shirt_mean the coarse mesh tangled a sleeve (strain 3.1 % mean,
   /// 10.3 % p95 at 10,000 vertices, against 1.2 % and 4.1 % sewn in one level).
   double coarse_factor = -1;
@@ -58,13 +59,13 @@ struct SewOptions {
   std::function<void(double fraction)> on_progress;
 };
 
-/// What sewing did, for reports and benchmarks.
 /// The coarsest mesh edge (mm) a default coarse level is sewn at (see SewOptions::coarse_factor).
 inline constexpr double kMaxCoarseEdge_mm = 32;
 /// A default coarse level whose widest stitch gap ends above this many done gaps (or that passes
 /// through itself) is discarded and the garment sewn on one level (SewStats::coarse_fallback_*).
 inline constexpr double kCoarseFallbackGap = 2;
 
+/// What sewing did, for reports and benchmarks.
 struct SewStats {
   int sewing_iterations = 0;
   int relax_iterations = 0;
