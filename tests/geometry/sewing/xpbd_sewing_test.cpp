@@ -122,6 +122,31 @@ TEST(XpbdSewing, SameInputSameGarmentToTheBitForAnyThreadCount) {
   EXPECT_EQ(std::memcmp(a->vertices_mm.data(), b->vertices_mm.data(), a->vertices_mm.size() * sizeof(Vec3)), 0);
 }
 
+// The default levels: at 15 mm the tube is sewn first at 30 mm (within kMaxCoarseEdge_mm), carried
+// over and settled on the fine mesh, closed and untangled; at 30 mm a coarse level would be 32 mm
+// (factor 1.07, under 1.5), so it is sewn on one.
+TEST(XpbdSewing, TwoLevelsWhereTheCoarseEdgeAllowsElseOne) {
+  BodySdf body = cylinder_body(100, 0, 600);
+  Pattern p = tube_pattern();
+  SewOptions o = xpbd_options();
+  o.target_edge_mm = 15;
+  SewStats st;
+  auto g = sew_garment(p, body, o, &st);
+  ASSERT_TRUE(g) << g.error().what();
+  EXPECT_EQ(st.levels, 2);
+  EXPECT_GT(st.relax_iterations, 0) << "the fine level was not settled";
+  EXPECT_EQ(st.coarse_fallback_gap_mm, 0);
+  EXPECT_EQ(st.coarse_fallback_self_intersections, 0);
+  EXPECT_EQ(cgal_self_intersections(*g), 0);
+  FitReport fit = check_fit(p, *g, &body, st.stitch_gap_mm);
+  EXPECT_LT(fit.stitch_gap_max_mm, 1.0);
+  EXPECT_EQ(fit.inside_body, 0);
+  o.target_edge_mm = 30;
+  SewStats one;
+  ASSERT_TRUE(sew_garment(p, body, o, &one));
+  EXPECT_EQ(one.levels, 1);
+}
+
 TEST(XpbdSewing, CgalCheckFindsACrossing) {
   // Two single-triangle pieces crossing each other: the independent check must see it.
   Garment g;
