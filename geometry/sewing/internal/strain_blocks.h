@@ -1,6 +1,6 @@
-// geometry/sewing/internal/strain_blocks.h: the cloth's triangles split into blocks that share no
-// vertex, so the strain projections of one substep can run on several threads and still give the
-// same positions to the bit for any thread count.
+// geometry/sewing/internal/strain_blocks.h: the cloth's triangles (and bending stencils) split into
+// blocks that share no vertex, so the strain and bending projections of one substep can run on
+// several threads and still give the same positions to the bit for any thread count.
 #pragma once
 
 #include <vector>
@@ -35,6 +35,17 @@ struct StrainBlocks {
 /// cloth moves; `inv_mass` must not change.
 StrainBlocks plan_strain_blocks(const std::vector<RestTriangle>& triangles, const std::vector<double>& inv_mass,
                                 const std::vector<Vec3>& x, int levels, int rounds);
+
+/// Elements (by index) in rounds of blocks that share no vertex within a round, then the rest.
+struct ElementRounds {
+  std::vector<std::vector<std::vector<int>>> rounds;  ///< round, block: element indices, ascending
+  std::vector<int> serial;                            ///< ascending
+};
+
+/// The bending stencils split as plan_strain_blocks splits triangles (by their four vertices'
+/// centroid; a block's stencils share no vertex with another block's of the round).
+ElementRounds plan_bend_blocks(const std::vector<BendStencil>& bends, const std::vector<Vec3>& x, int levels,
+                               int rounds);
 
 /// One strain pass (project_triangle on every triangle with `limit` and `stiffness`): each round's
 /// blocks on `pool`, each in its triangles' order, then the serial triangles in theirs. The result

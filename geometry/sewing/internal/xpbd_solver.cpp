@@ -26,9 +26,9 @@ constexpr double kRelativeSingular = 1e-9;
 constexpr int kSeamSweeps = 4;
 /// A strain-limit correction along an edge shorter than this (mm) has no direction.
 constexpr double kZeroLength_mm = 1e-12;
-/// The strain projections run in rounds of 2^3 vertex-disjoint blocks (whatever the thread
-/// count), the bands between one round's blocks split again in the next, then the rest in one
-/// thread.
+/// The strain (and bending) projections run in rounds of 2^3 vertex-disjoint blocks (whatever the
+/// thread count), the bands between one round's blocks split again in the next, then the rest in
+/// one thread.
 constexpr int kStrainBlockLevels = 3;
 constexpr int kStrainBlockRounds = 3;
 /// A drape substep runs about 25 short parallel loops (8 strain passes of 3 rounds, the body
@@ -203,6 +203,7 @@ Result<XpbdStats> run_xpbd(ClothModel& cloth, const BodySdf& body, const XpbdPar
   SelfCollisionPairs pairs;
   SelfCollisionScratch scratch;
   StrainBlocks blocks = plan_strain_blocks(cloth.triangles, cloth.inv_mass, x, kStrainBlockLevels, kStrainBlockRounds);
+  const ElementRounds bend_blocks = plan_bend_blocks(cloth.bends, x, kStrainBlockLevels, kStrainBlockRounds);
   // Sewing: every stitched pair's allowed distance shrinks from its start at a fixed speed.
   const bool sewing = !cloth.stitches.empty();
   std::vector<double> stitch_start(cloth.stitches.size());
@@ -261,7 +262,13 @@ Result<XpbdStats> run_xpbd(ClothModel& cloth, const BodySdf& body, const XpbdPar
       if (sewing) project_stitches();
       project_seam_edges(cloth, x);
     }
-    for (const BendStencil& s : cloth.bends) project_bend(s, cloth.inv_mass, dt2, x);
+    // Bending in blocks of stencils that share no vertex, as the strain passes (shirt_mean's drape
+    // at 10,174 vertices: 2.0 s in one thread, 1.45 s so; 15 % of the stencils are left serial).
+    for (const auto& round : bend_blocks.rounds)
+      pool.parallel_for(static_cast<int>(round.size()), [&](int b, int) {
+        for (int k : round[b]) project_bend(cloth.bends[k], cloth.inv_mass, dt2, x);
+      });
+    for (int k : bend_blocks.serial) project_bend(cloth.bends[k], cloth.inv_mass, dt2, x);
     // The stitches again after bending: bending near a seam line otherwise reopens it (a
     // 1.7-2.2 mm gap held on dress_pencil).
     if (sewing) project_stitches();

@@ -99,7 +99,8 @@ TEST(DrapeGarment, SheetOnACapSettlesBeforeTheTimeLimit) {
   // 3 s limit (the old test, all but 0.5 % of the vertices slower than 4 mm/s in one substep,
   // ran every garment to its limit). Its corners keep folding slowly (RMS 5.5 mm/s at 3 s), so
   // the test asks for 10 mm/s. Measured: it stops at 2.45 s with the drape's 1.25 ms substeps,
-  // at 1.6 s with 2.5 ms ones (coarser steps damp more).
+  // at 1.6 s with 2.5 ms ones (coarser steps damp more); 2.85 s since the bending runs in blocks
+  // of stencils (another Gauss-Seidel order: the corners' slow folding dips under 10 mm/s later).
   const BodySdf body = test_fixture::cylinder_body(100, 100, 400);
   const Garment sheet = flat_sheet(300, 20, 410);
   DrapeOptions o;
@@ -109,7 +110,7 @@ TEST(DrapeGarment, SheetOnACapSettlesBeforeTheTimeLimit) {
   auto g = drape_garment(sheet, body, o, &st);
   ASSERT_TRUE(g) << g.error().what();
   EXPECT_TRUE(st.settled);
-  EXPECT_LT(st.simulated_s, 2.75);
+  EXPECT_LT(st.simulated_s, 2.95);
   EXPECT_LT(st.settle_speed_mm_s, o.settle_speed_mm_s);
   int inside = 0;
   for (const Vec3& p : g->vertices_mm) inside += body.query(p).distance_mm < 0;

@@ -1,6 +1,6 @@
-// tests/geometry/sewing/strain_blocks_test.cpp: the vertex-disjoint blocks the strain passes run
-// in parallel: every triangle once, no vertex in two blocks of a round, and a parallel pass equal
-// to the same order in one thread, to the bit.
+// tests/geometry/sewing/strain_blocks_test.cpp: the vertex-disjoint blocks the strain passes and
+// the bending run in parallel: every triangle (stencil) once, no vertex in two blocks of a round,
+// and a parallel pass equal to the same order in one thread, to the bit.
 #include "geometry/sewing/internal/strain_blocks.h"
 
 #include <gtest/gtest.h>
@@ -87,6 +87,37 @@ TEST(StrainBlocks, ParallelPassEqualsTheSameOrderInOneThreadToTheBit) {
   // The pass did its work: the 10 % stretch along x is pulled in.
   const Vec3 a = cloth.x_mm[0], b = cloth.x_mm[60];
   EXPECT_LT(norm(ref[60] - ref[0]), norm(b - a));
+}
+
+TEST(StrainBlocks, EveryBendStencilOnceAndNoVertexInTwoBlocksOfARound) {
+  const internal::ClothModel cloth = stretched_sheet();
+  ASSERT_GT(cloth.bends.size(), 10000u);
+  const internal::ElementRounds plan = internal::plan_bend_blocks(cloth.bends, cloth.x_mm, 3, 3);
+  std::vector<int> seen(cloth.bends.size(), 0);
+  size_t in_blocks = 0;
+  ASSERT_EQ(plan.rounds.size(), 3u);
+  for (const auto& round : plan.rounds) {
+    ASSERT_EQ(round.size(), 8u);
+    std::vector<int> owner(cloth.x_mm.size(), -1);
+    for (size_t b = 0; b < round.size(); ++b) {
+      EXPECT_TRUE(std::is_sorted(round[b].begin(), round[b].end()));
+      for (int k : round[b]) {
+        ++seen[k];
+        const internal::BendStencil& s = cloth.bends[k];
+        for (int v : {s.a, s.b, s.c, s.d}) {
+          EXPECT_TRUE(owner[v] == -1 || owner[v] == static_cast<int>(b)) << "vertex " << v << " in two blocks";
+          owner[v] = static_cast<int>(b);
+        }
+      }
+      in_blocks += round[b].size();
+    }
+  }
+  EXPECT_TRUE(std::is_sorted(plan.serial.begin(), plan.serial.end()));
+  for (int k : plan.serial) ++seen[k];
+  EXPECT_EQ(std::count(seen.begin(), seen.end(), 1), static_cast<long>(cloth.bends.size()));
+  std::printf("figure bend_blocks in_blocks=%zu serial=%zu of %zu\n", in_blocks, plan.serial.size(),
+              cloth.bends.size());
+  EXPECT_LT(plan.serial.size(), cloth.bends.size() / 4);
 }
 
 }  // namespace
