@@ -53,6 +53,12 @@ class SpatialHash {
   void visit(size_t s, Fn&& fn) const {
     for (size_t k = b_.start[s]; k < b_.start[s + 1]; ++k) fn(b_.ids[k]);
   }
+  // The entries above `id` only, in their order (a slot's entries ascend: fill() runs in id order).
+  template <class Fn>
+  void visit_above(size_t s, int id, Fn&& fn) const {
+    const auto end = b_.ids.begin() + static_cast<long>(b_.start[s + 1]);
+    for (auto it = std::upper_bound(b_.ids.begin() + static_cast<long>(b_.start[s]), end, id); it != end; ++it) fn(*it);
+  }
 
  private:
   double cell_;
@@ -235,8 +241,8 @@ SelfCollisionPairs find_self_collision_pairs(const ClothModel& cloth, const std:
       edge_box(ea, lo, hi);
       found.clear();
       for_cells(eh, lo, hi, [&](size_t s) {
-        eh.visit(s, [&](int o) {
-          if (o > static_cast<int>(k) && stamp_e[o] != (ee_gen | k)) stamp_e[o] = ee_gen | k, found.push_back(o);
+        eh.visit_above(s, static_cast<int>(k), [&](int o) {
+          if (stamp_e[o] != (ee_gen | k)) stamp_e[o] = ee_gen | k, found.push_back(o);
         });
       });
       for (int o : found) {
