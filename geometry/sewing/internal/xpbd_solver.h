@@ -18,7 +18,7 @@ struct XpbdParams {
   double substep_s = 1.0 / 400;      ///< substep length
   /// Self-collision pairs are searched again before any vertex has moved this far from where the
   /// last search saw it; pairs closer than the thickness plus twice this are kept.
-  double broad_phase_pad_mm = 4;
+  double broad_phase_pad_mm = 3;
   double gravity_mm_s2 = 9810;       ///< along -y
   double damping_per_s = 4;          ///< velocity decays as exp(-damping t)
   double body_thickness_mm = 3;      ///< vertices stay this far out of the body
