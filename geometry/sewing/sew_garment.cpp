@@ -212,30 +212,48 @@ Result<Garment> sew_garment(const Pattern& pattern, const PatternMesh& meshes, c
     // Coarse level: the whole sewing on a coarser mesh, then its shape carried over.
     SewOptions coarse_opt = options;
     coarse_opt.on_progress = {};  // the fine level reports; the coarse run is its first part
-    coarse_opt.target_edge_mm = options.target_edge_mm * coarse_factor;
     coarse_opt.coarse_factor = 0;
-    SewStats coarse_stats;
-    auto coarse = sew_garment(pattern, body, coarse_opt, &coarse_stats, cancel);
-    if (!coarse) return fail(coarse.error());
     // A default coarse level that left a seam open or passes through itself (a mesh too coarse
     // for a narrow place: js_mean_all's crotch at 36 mm edges, 2.4 mm open; at 32 mm, 11
-    // intersecting pairs, none at 31.8 mm) is not carried over: sewn again on one level.
+    // intersecting pairs, none at 31.8 mm) is not carried over: it is sewn once more on a mesh
+    // kCoarseRetryFactor as coarse (not below 1.5 x the fine edge), then on one level. Whether a
+    // coarse mesh crosses itself in such a place turns on its triangulation, and a coarse level
+    // costs a fraction of one level.
+    std::vector<double> factors{coarse_factor};
+    const double retry = std::max(1.5, coarse_factor * kCoarseRetryFactor);
+    if (options.coarse_factor < 0 && retry < coarse_factor) factors.push_back(retry);
+    SewStats coarse_stats;
+    Result<Garment> coarse = fail(ErrorCode::kSewing, "no coarse level");
     double coarse_gap = 0;
-    for (const auto& gaps : coarse_stats.stitch_gap_mm)
-      for (double g : gaps) coarse_gap = std::max(coarse_gap, g);
-    const int coarse_crossings = options.coarse_factor < 0 ? count_self_intersections(*coarse) : 0;
+    int coarse_crossings = 0;
+    for (size_t attempt = 0; attempt < factors.size(); ++attempt) {
+      coarse_opt.target_edge_mm = options.target_edge_mm * factors[attempt];
+      coarse_stats = SewStats{};
+      coarse = sew_garment(pattern, body, coarse_opt, &coarse_stats, cancel);
+      if (!coarse) return fail(coarse.error());
+      coarse_gap = 0;
+      for (const auto& gaps : coarse_stats.stitch_gap_mm)
+        for (double g : gaps) coarse_gap = std::max(coarse_gap, g);
+      coarse_crossings = options.coarse_factor < 0 ? count_self_intersections(*coarse) : 0;
+      if (coarse_gap <= kCoarseFallbackGap * options.xpbd_done_gap_mm && coarse_crossings == 0) break;
+      if (options.coarse_factor < 0) st.coarse_discarded = static_cast<int>(attempt) + 1;
+    }
     if (options.coarse_factor < 0 &&
         (coarse_gap > kCoarseFallbackGap * options.xpbd_done_gap_mm || coarse_crossings > 0)) {
+      const int discarded = st.coarse_discarded;
       SewOptions one_level = options;
       one_level.coarse_factor = 0;
       auto g = sew_garment(pattern, meshes, body, one_level, stats, cancel);
       if (stats) {
         stats->coarse_fallback_gap_mm = coarse_gap;
         stats->coarse_fallback_self_intersections = coarse_crossings;
+        stats->coarse_discarded = discarded;
+        stats->coarse_edge_mm = 0;
         stats->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       }
       return g;
     }
+    st.coarse_edge_mm = coarse_opt.target_edge_mm;
     st.sewing_iterations = coarse_stats.sewing_iterations;
     st.stitch_gap_mm = std::move(coarse_stats.stitch_gap_mm);
     for (size_t p = 0; p < pattern.pieces.size(); ++p) {

@@ -137,6 +137,8 @@ TEST(XpbdSewing, TwoLevelsWhereTheCoarseEdgeAllowsElseOne) {
   EXPECT_GT(st.relax_iterations, 0) << "the fine level was not settled";
   EXPECT_EQ(st.coarse_fallback_gap_mm, 0);
   EXPECT_EQ(st.coarse_fallback_self_intersections, 0);
+  EXPECT_EQ(st.coarse_discarded, 0);
+  EXPECT_DOUBLE_EQ(st.coarse_edge_mm, 30);
   EXPECT_EQ(cgal_self_intersections(*g), 0);
   FitReport fit = check_fit(p, *g, &body, st.stitch_gap_mm);
   EXPECT_LT(fit.stitch_gap_max_mm, 1.0);
@@ -145,6 +147,31 @@ TEST(XpbdSewing, TwoLevelsWhereTheCoarseEdgeAllowsElseOne) {
   SewStats one;
   ASSERT_TRUE(sew_garment(p, body, o, &one));
   EXPECT_EQ(one.levels, 1);
+}
+
+// The fallback: the tube's panels placed 160 mm out (rolled round the body at that radius, each
+// covers 129 degrees, so the side seams start about 80 mm open) and sewn for 1 s with seams that
+// close at 20 mm/s, so every level ends open: the default coarse level at 30 mm is discarded, the
+// retry at 27 mm (0.9 as coarse) too, and the tube is sewn on one level at 15 mm (left open as
+// well, which the fit check reports), untangled and outside the body.
+TEST(XpbdSewing, ACoarseLevelLeftOpenIsSewnOnceMoreFinerThenOnOneLevel) {
+  BodySdf body = cylinder_body(100, 0, 600);
+  Pattern p = two_panels("tube", kPi * 115, 300, 100, 160, -160);
+  SewOptions o = xpbd_options();
+  o.target_edge_mm = 15;
+  o.xpbd_close_mm_s = 20;
+  o.xpbd_duration_s = 1;
+  SewStats st;
+  auto g = sew_garment(p, body, o, &st);
+  ASSERT_TRUE(g) << g.error().what();
+  EXPECT_EQ(st.levels, 1);
+  EXPECT_EQ(st.coarse_discarded, 2);
+  EXPECT_EQ(st.coarse_edge_mm, 0);
+  EXPECT_GT(st.coarse_fallback_gap_mm, kCoarseFallbackGap * o.xpbd_done_gap_mm);
+  EXPECT_EQ(cgal_self_intersections(*g), 0);
+  FitReport fit = check_fit(p, *g, &body, st.stitch_gap_mm);
+  EXPECT_GT(fit.stitch_gap_max_mm, 1.0);
+  EXPECT_EQ(fit.inside_body, 0);
 }
 
 TEST(XpbdSewing, CgalCheckFindsACrossing) {
