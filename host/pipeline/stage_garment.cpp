@@ -172,6 +172,7 @@ Status stage_garment(PipelineState& ps) {
     ps.report["sewing"] = {{"solver", solver},
                            {"solver_asked", ps.job.garment.sewing},
                            {"levels", stats.levels},
+                           {"coarse_discarded", stats.coarse_discarded},
                            {"sewing_iterations", stats.sewing_iterations},
                            {"relax_iterations", stats.relax_iterations},
                            {"contacts", stats.contacts},

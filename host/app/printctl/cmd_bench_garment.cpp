@@ -216,8 +216,9 @@ void bench_one(const std::string& name, geometry::Pattern pattern, const geometr
   std::string failed;
   for (const auto& f : fit.failures) failed += (failed.empty() ? "" : ",") + f.check;
   std::printf(
-      "garment=%s solver=%s levels=%d coarse_fallback_gap_mm=%.2f coarse_fallback_self_intersections=%d "
-      "mesh_edge_mm=%.1f vertices=%d stitches=%zu suggested=%d stitch_gap_max_mm=%.2f "
+      "garment=%s solver=%s levels=%d coarse_edge_mm=%.1f coarse_discarded=%d coarse_fallback_gap_mm=%.2f "
+      "coarse_fallback_self_intersections=%d mesh_edge_mm=%.1f vertices=%d stitches=%zu suggested=%d "
+      "stitch_gap_max_mm=%.2f "
       "stitch_gap_p95_mm=%.2f "
       "self_intersections=%d inside_body=%d min_clearance_mm=%.1f body_distance_p50_mm=%.1f body_distance_p95_mm=%.1f "
       "off_body=%.4f "
@@ -226,13 +227,13 @@ void bench_one(const std::string& name, geometry::Pattern pattern, const geometr
       "drape_self_intersections=%d drape_inside_body=%d drape_strain_p95=%.4f drape_simulated_s=%.3f "
       "drape_settled=%s gathered_fraction=%.3f strain_p95_plain=%.4f strain_p95_eased=%.4f eased_area=%.3f "
       "seam_len_diff_max_plain=%.4f drape_strain_p95_plain=%.4f drape_seam_len_diff_max_plain=%.4f checks=%s%s%s\n",
-      name.c_str(), o.solver == geometry::SewSolver::kXpbd ? "xpbd" : "arap", stats.levels,
-      stats.coarse_fallback_gap_mm, stats.coarse_fallback_self_intersections, o.target_edge_mm, r.vertices,
-      pattern.stitches.size(), suggested, fit.stitch_gap_max_mm, fit.stitch_gap_p95_mm, fit.self_intersections,
-      fit.inside_body, r.min_clearance_mm, fit.body_distance_p50_mm, fit.body_distance_p95_mm, fit.off_body,
-      fit.unsewn_pieces.size(), start.inside_before, start.inside_after, start.max_push_mm, r.strain_mean, r.strain_p95,
-      r.seam_len_diff_max, aligned ? "yes" : "no", seconds, drape_seconds, drape_self, drape_inside, drape_strain_p95,
-      drape_simulated_s,
+      name.c_str(), o.solver == geometry::SewSolver::kXpbd ? "xpbd" : "arap", stats.levels, stats.coarse_edge_mm,
+      stats.coarse_discarded, stats.coarse_fallback_gap_mm, stats.coarse_fallback_self_intersections, o.target_edge_mm,
+      r.vertices, pattern.stitches.size(), suggested, fit.stitch_gap_max_mm, fit.stitch_gap_p95_mm,
+      fit.self_intersections, fit.inside_body, r.min_clearance_mm, fit.body_distance_p50_mm, fit.body_distance_p95_mm,
+      fit.off_body, fit.unsewn_pieces.size(), start.inside_before, start.inside_after, start.max_push_mm, r.strain_mean,
+      r.strain_p95, r.seam_len_diff_max, aligned ? "yes" : "no", seconds, drape_seconds, drape_self, drape_inside,
+      drape_strain_p95, drape_simulated_s,
       !a.drape        ? "off"
       : drape_settled ? "yes"
                       : "no",
