@@ -133,6 +133,7 @@ TEST(PatternJobs, StitchesFileFromPatternSuggestIsUsedAndTooTightLimitsFailNamin
   EXPECT_EQ(rep["sewing"]["solver"], "xpbd") << rep["sewing"].dump();
   EXPECT_EQ(rep["sewing"]["solver_asked"], "auto") << rep["sewing"].dump();
   EXPECT_EQ(rep["sewing"]["levels"], 1) << rep["sewing"].dump();
+  EXPECT_EQ(rep["sewing"]["coarse_discarded"], 0) << rep["sewing"].dump();
 }
 
 }  // namespace
