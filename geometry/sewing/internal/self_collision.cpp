@@ -15,6 +15,10 @@ namespace {
 
 /// Primitives of one piece closer than this many mean edges in the pattern are not paired.
 constexpr double kRestNeighbourEdges = 1.5;
+/// A pair whose bound on its distance clears the thickness by this much (mm) is skipped before
+/// its closest points are found (the margin covers the bound's rounding, so the result is the
+/// one the full test gives).
+constexpr double kSkipMargin_mm = 1e-6;
 
 // A dense spatial hash (Teschner et al. 2003): entries counted into a fixed table by cell hash,
 // in buffers kept from the last search.
@@ -279,6 +283,9 @@ int resolve_self_collisions(const ClothModel& cloth, const SelfCollisionPairs& p
     const Vec3 a = x[t.v[0]], b = x[t.v[1]], c = x[t.v[2]];
     const Vec3 n = triangle_normal(x, t);
     if (dot(n, n) == 0) continue;
+    // Its height over the triangle's plane is the distance below wherever the vertex is over the
+    // face: a pair a thickness away from the plane is not in contact (most are not, each substep).
+    if (dot(x[pr.vertex] - a, n) * pr.side >= thickness_mm + kSkipMargin_mm) continue;
     const auto bc = closest_on_triangle(x[pr.vertex], a, b, c);
     // Only where the vertex is over the triangle's face; edges are the edge-edge pairs' part.
     if (bc[0] <= 0 || bc[1] <= 0 || bc[2] <= 0) continue;
@@ -296,6 +303,11 @@ int resolve_self_collisions(const ClothModel& cloth, const SelfCollisionPairs& p
   for (const EdgeEdgePair& pr : pairs.edge_edge) {
     const auto& ea = cloth.edges[pr.edge_a];
     const auto& eb = cloth.edges[pr.edge_b];
+    // The closest points' separation along the pair's direction is at least the nearest ends'.
+    const Vec3& sep = pr.separation;
+    const double lo_a = std::min(dot(x[ea[0]], sep), dot(x[ea[1]], sep));
+    const double hi_b = std::max(dot(x[eb[0]], sep), dot(x[eb[1]], sep));
+    if (lo_a - hi_b >= thickness_mm + kSkipMargin_mm) continue;
     const auto st = closest_on_segments(x[ea[0]], x[ea[1]], x[eb[0]], x[eb[1]]);
     // Interior crossings only: endpoints against faces are the point-triangle pairs' part.
     if (st[0] <= 0 || st[0] >= 1 || st[1] <= 0 || st[1] >= 1) continue;
