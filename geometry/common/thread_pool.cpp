@@ -56,6 +56,10 @@ void ThreadPool::worker_loop(int worker) {
       wake_.wait(lock, [&] { return stop_ || generation_.load(std::memory_order_relaxed) != seen; });
       if (stop_) return;
       seen = generation_.load(std::memory_order_relaxed);
+      // The caller closes a loop once every index is taken: a worker that comes later (it was
+      // not scheduled in time) skips it, so the caller never waits for one that did nothing.
+      if (!open_) continue;
+      busy_.fetch_add(1, std::memory_order_relaxed);
     }
     run_indices(worker);
     {
@@ -76,11 +80,19 @@ void ThreadPool::parallel_for(int count, const std::function<void(int, int)>& fn
     task_ = &fn;
     count_ = count;
     next_.store(0, std::memory_order_relaxed);
-    busy_.store(static_cast<int>(workers_.size()), std::memory_order_relaxed);
+    busy_.store(0, std::memory_order_relaxed);
+    open_ = true;
     generation_.fetch_add(1, std::memory_order_release);
   }
   wake_.notify_all();
   run_indices(0);
+  // Every index is taken: close the loop to workers not yet in it, then wait for those in it.
+  // Waiting for every worker instead made a loop last a scheduler time slice whenever a worker
+  // was not running (two drape tests side by side on 2 cores: 36 s each, 1.3 s alone).
+  {
+    std::lock_guard lock(mutex_);
+    open_ = false;
+  }
   spin_until(spin_us_, [&] { return busy_.load(std::memory_order_acquire) == 0; });
   std::unique_lock lock(mutex_);
   done_.wait(lock, [&] { return busy_.load(std::memory_order_relaxed) == 0; });

@@ -29,7 +29,8 @@ class ThreadPool {
   int size() const { return static_cast<int>(workers_.size()) + 1; }
 
   /// Runs fn(index, worker) for every index in [0, count) and returns when all have finished.
-  /// `fn` must not throw. Not reentrant.
+  /// The caller runs indices too; workers that come after every index is taken skip the loop, so
+  /// a loop never waits for a worker the scheduler has not run. `fn` must not throw. Not reentrant.
   void parallel_for(int count, const std::function<void(int index, int worker)>& fn);
 
  private:
@@ -45,6 +46,7 @@ class ThreadPool {
   std::atomic<int> busy_{0};
   std::atomic<std::uint64_t> generation_{0};
   bool stop_ = false;
+  bool open_ = false;  ///< the current loop still takes workers (guarded by mutex_)
   int spin_us_ = 0;
 };
 

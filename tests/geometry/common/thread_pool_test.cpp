@@ -45,6 +45,23 @@ TEST(ThreadPool, PollingWorkersRunManyShortLoopsEveryIndexOnce) {
   for (auto& r : runs) EXPECT_EQ(r.load(), 5000);
 }
 
+// More workers than the machine has cores, loops shorter than a wake-up: the caller takes most
+// indices itself and closes each loop before some workers come, which then skip it. Every index
+// still runs once, none runs in a later loop, and no loop waits forever.
+TEST(ThreadPool, WorkersThatComeAfterALoopClosedSkipItAndEveryIndexRunsOnce) {
+  for (int spin_us : {0, 300}) {
+    ThreadPool pool(6, spin_us);
+    std::vector<std::atomic<int>> runs(3);
+    std::atomic<int> wrong_loop{0};
+    for (int loop = 0; loop < 20000; ++loop)
+      pool.parallel_for(3, [&](int i, int) {
+        if (runs[static_cast<size_t>(i)].fetch_add(1) != loop) wrong_loop++;
+      });
+    for (auto& r : runs) EXPECT_EQ(r.load(), 20000) << "spin " << spin_us;
+    EXPECT_EQ(wrong_loop.load(), 0) << "spin " << spin_us;
+  }
+}
+
 TEST(ThreadPool, EmptyLoopReturnsAtOnce) {
   ThreadPool pool(2);
   int calls = 0;
