@@ -219,14 +219,16 @@ Result<Garment> sew_garment(const Pattern& pattern, const PatternMesh& meshes, c
     // kCoarseRetryFactor as coarse (not below 1.5 x the fine edge), then on one level. Whether a
     // coarse mesh crosses itself in such a place turns on its triangulation, and a coarse level
     // costs a fraction of one level.
+    const bool by_default = options.coarse_factor < 0;  // an asked-for coarse level is kept as sewn
     std::vector<double> factors{coarse_factor};
     const double retry = std::max(1.5, coarse_factor * kCoarseRetryFactor);
-    if (options.coarse_factor < 0 && retry < coarse_factor) factors.push_back(retry);
+    if (by_default && retry < coarse_factor) factors.push_back(retry);
     SewStats coarse_stats;
     Result<Garment> coarse = fail(ErrorCode::kSewing, "no coarse level");
     double coarse_gap = 0;
     int coarse_crossings = 0;
-    for (size_t attempt = 0; attempt < factors.size(); ++attempt) {
+    bool coarse_ok = false;
+    for (size_t attempt = 0; attempt < factors.size() && !coarse_ok; ++attempt) {
       coarse_opt.target_edge_mm = options.target_edge_mm * factors[attempt];
       coarse_stats = SewStats{};
       coarse = sew_garment(pattern, body, coarse_opt, &coarse_stats, cancel);
@@ -234,12 +236,11 @@ Result<Garment> sew_garment(const Pattern& pattern, const PatternMesh& meshes, c
       coarse_gap = 0;
       for (const auto& gaps : coarse_stats.stitch_gap_mm)
         for (double g : gaps) coarse_gap = std::max(coarse_gap, g);
-      coarse_crossings = options.coarse_factor < 0 ? count_self_intersections(*coarse) : 0;
-      if (coarse_gap <= kCoarseFallbackGap * options.xpbd_done_gap_mm && coarse_crossings == 0) break;
-      if (options.coarse_factor < 0) st.coarse_discarded = static_cast<int>(attempt) + 1;
+      coarse_crossings = by_default ? count_self_intersections(*coarse) : 0;
+      coarse_ok = !by_default || (coarse_gap <= kCoarseFallbackGap * options.xpbd_done_gap_mm && coarse_crossings == 0);
+      if (!coarse_ok) st.coarse_discarded = static_cast<int>(attempt) + 1;
     }
-    if (options.coarse_factor < 0 &&
-        (coarse_gap > kCoarseFallbackGap * options.xpbd_done_gap_mm || coarse_crossings > 0)) {
+    if (!coarse_ok) {
       const int discarded = st.coarse_discarded;
       SewOptions one_level = options;
       one_level.coarse_factor = 0;

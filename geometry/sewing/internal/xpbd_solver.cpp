@@ -31,8 +31,8 @@ constexpr double kZeroLength_mm = 1e-12;
 /// one thread.
 constexpr int kStrainBlockLevels = 3;
 constexpr int kStrainBlockRounds = 3;
-/// A drape substep runs about 25 short parallel loops (8 strain passes of 3 rounds, the body
-/// pass): the workers poll between them rather than sleep (shirt_mean's drape at 10,174
+/// A drape substep runs about 28 short parallel loops (8 strain passes of 3 rounds, the bending's
+/// 3 rounds, the body pass): the workers poll between them rather than sleep (shirt_mean's drape at 10,174
 /// vertices with 16 passes, one run each: strain passes 6.8 s sleeping, 6.0 s polling for 300 us).
 constexpr int kPoolSpin_us = 300;
 
