@@ -184,12 +184,9 @@ Status PrintSession::send_swath(const device::Swath& swath, const geometry::Canc
   const std::uint32_t idx = swath.header.index;
   const std::size_t bytes = swath.data.size();
   if (idx < next_send_) {
-    // Resuming: on the fabric or in the printer already. One the printer holds unprinted (a job
-    // re-attached with its buffer) counts against the credits until it is printed: without it the
-    // host sent a re-attached job's next swaths into a full buffer ("sent without credit").
+    // Resuming: on the fabric or in the printer already.
     swath_count_ = std::max(swath_count_, idx + 1);
     ++stats_.swaths_skipped;
-    if (idx >= printed_next_) unprinted_.push_back(swath);
     return service(milliseconds(0), &cancel);
   }
   if (idx != next_send_)
