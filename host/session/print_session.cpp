@@ -112,6 +112,8 @@ Status PrintSession::begin_job(const JobStart& job) {
   finished_on_printer_ = false;
   reopen_seq_ = 0;
   unprinted_.clear();
+  reattach_held_until_ = 0;
+  reattach_held_bytes_ = 0;
   feed_fix_swath_.reset();
   lost_at_um_.reset();
   cues_.clear();
@@ -203,12 +205,14 @@ Status PrintSession::send_swath(const device::Swath& swath, const geometry::Canc
   swath_count_ = std::max(swath_count_, idx + 1);
   ++next_send_;
   planned_end_um_ += swath.header.feed_before_um;
-  // Credits: never more swaths or bytes in the printer than its buffer holds.
+  // Credits: never more swaths or bytes in the printer than its buffer holds, counting the swaths a
+  // re-attached printer still held (their bytes as a whole, until the last of them is printed).
   const auto t0 = Clock::now();
   for (;;) {
-    std::size_t held = 0;
+    const std::size_t held_slots = printed_next_ < reattach_held_until_ ? reattach_held_until_ - printed_next_ : 0;
+    std::size_t held = held_slots > 0 ? reattach_held_bytes_ : 0;
     for (const auto& b : unprinted_) held += b.data.size();
-    if (unprinted_.size() < identity_.swath_slots && held + bytes <= identity_.swath_buffer_bytes) break;
+    if (unprinted_.size() + held_slots < identity_.swath_slots && held + bytes <= identity_.swath_buffer_bytes) break;
     if (auto s = service(milliseconds(20), &cancel); !s) return s;
     if (!active_) return fail(ErrorCode::kPrinter, "job ended while waiting for printer credit");
   }

@@ -187,6 +187,11 @@ class PrintSession {
   /// Sent, not yet printed: they hold printer credit, and are resent after a reconnect (those not
   /// acknowledged) or after the printer lost the job (all of them).
   std::deque<device::Swath> unprinted_;
+  /// Re-attached to a job the printer kept: the swaths below `reattach_held_until_` it had received
+  /// but not printed are in its buffer, and the host never had them (its RIP resumes after them).
+  /// Until they are printed they hold `reattach_held_bytes_` of the buffer and one slot each.
+  std::uint32_t reattach_held_until_ = 0;
+  std::size_t reattach_held_bytes_ = 0;
   /// Feed correction for swath `feed_fix_swath_` on the wire: the printer lost the job with the
   /// fabric standing elsewhere than where that swath's planned feed starts.
   std::optional<std::uint32_t> feed_fix_swath_;

@@ -171,6 +171,39 @@ TEST(PrintSession, ANewSessionReattachesToTheJobThePrinterStillHolds) {
   EXPECT_EQ(res->job.report.drops_per_ink, clean_drops(o));
 }
 
+TEST(PrintSession, AReattachedJobWaitsForCreditWhileThePrinterStillHoldsAFullBuffer) {
+  // The printer is paused with its 3-slot buffer full when the host dies; the new session knows
+  // the printer holds swaths 0-2 only from its status, and must not send swath 3 before one of
+  // them is printed (the printer refuses a swath sent without credit).
+  auto o = job(6);
+  o.job.cue_every = 0;
+  Rig r(model(3));
+  r.open();
+  r.printer.set_condition(device::PrinterCondition::kInkLow, true);
+  JobStart start{o.job_id, o.name, 0, 80};
+  ASSERT_TRUE(r.session->begin_job(start));
+  geometry::CancelToken cancel;
+  for (std::uint32_t i = 0; i < 3; ++i)
+    ASSERT_TRUE(r.session->send_swath(make_synthetic_swath(o.job, r.session->printer(), i), cancel));
+  (void)r.session.release();  // leaked on purpose: a dead process does not abort its job
+  ASSERT_EQ(r.printer.status().swath_next, 3u);
+  ASSERT_EQ(r.printer.status().free_slots, 0u);
+  r.open();
+  std::thread clear([&] {
+    std::this_thread::sleep_for(milliseconds(200));
+    r.transport->with_controller(
+        [](device::PrinterController& c) { c.set_condition(device::PrinterCondition::kInkLow, false); });
+  });
+  auto res = run_synthetic_job(*r.session, o, cancel);
+  clear.join();
+  ASSERT_TRUE(res) << res.error().message;
+  EXPECT_TRUE(res->job.stats.reattached);
+  EXPECT_GT(res->job.stats.credit_wait_s, 0.1);
+  EXPECT_EQ(r.fabric.printed, range(0, 6));
+  EXPECT_EQ(res->job.report.overruns, 0u);
+  EXPECT_EQ(res->job.report.drops_per_ink, clean_drops(o));
+}
+
 TEST(PrintSession, AJobThePrinterCompletedIsNotPrintedAgain) {
   auto o = job(5);
   o.job.cue_every = 0;
