@@ -184,6 +184,7 @@ void bench_one(const std::string& name, geometry::Pattern pattern, const geometr
   double drape_seconds = 0;
   int drape_self = -1, drape_inside = -1;
   double drape_strain_p95 = -1, drape_strain_p95_plain = -1, drape_simulated_s = 0, drape_seam_plain = -1;
+  double drape_min_clearance_mm = 0;
   bool drape_settled = false;
   if (a.drape) {
     geometry::DrapeOptions d;
@@ -191,6 +192,7 @@ void bench_one(const std::string& name, geometry::Pattern pattern, const geometr
     if (!m) die(m.error().message, 2);
     d.material = *m;
     d.threads = a.threads;
+    d.clearance_mm = a.sew.clearance_mm;
     geometry::DrapeStats ds;
     auto dg = geometry::drape_garment(*g, body, d, &ds);
     if (!dg) return error_line(dg.error().what());
@@ -203,6 +205,7 @@ void bench_one(const std::string& name, geometry::Pattern pattern, const geometr
     drape_strain_p95 = dr.strain_p95;
     drape_strain_p95_plain = dr.strain_p95_plain;
     drape_seam_plain = dr.seam_len_diff_max_plain;
+    drape_min_clearance_mm = dr.min_clearance_mm;
     if (!a.out.empty()) {
       if (auto st = write_garment_files(a.out, name + "_draped", pattern, *dg, body.mesh(), name + "_body"); !st)
         die(st.error().what(), 1);
@@ -224,7 +227,7 @@ void bench_one(const std::string& name, geometry::Pattern pattern, const geometr
       "off_body=%.4f "
       "unsewn=%zu start_inside=%d start_inside_pushed=%d start_max_push_mm=%.1f "
       "strain_mean=%.4f strain_p95=%.4f seam_len_diff_max=%.4f aligned=%s seconds=%.2f drape_seconds=%.2f "
-      "drape_self_intersections=%d drape_inside_body=%d drape_strain_p95=%.4f drape_simulated_s=%.3f "
+      "drape_self_intersections=%d drape_inside_body=%d drape_min_clearance_mm=%.1f drape_strain_p95=%.4f drape_simulated_s=%.3f "
       "drape_settled=%s gathered_fraction=%.3f strain_p95_plain=%.4f strain_p95_eased=%.4f eased_area=%.3f "
       "seam_len_diff_max_plain=%.4f drape_strain_p95_plain=%.4f drape_seam_len_diff_max_plain=%.4f checks=%s%s%s\n",
       name.c_str(), o.solver == geometry::SewSolver::kXpbd ? "xpbd" : "arap", stats.levels, stats.coarse_edge_mm,
@@ -233,7 +236,7 @@ void bench_one(const std::string& name, geometry::Pattern pattern, const geometr
       fit.self_intersections, fit.inside_body, r.min_clearance_mm, fit.body_distance_p50_mm, fit.body_distance_p95_mm,
       fit.off_body, fit.unsewn_pieces.size(), start.inside_before, start.inside_after, start.max_push_mm, r.strain_mean,
       r.strain_p95, r.seam_len_diff_max, aligned ? "yes" : "no", seconds, drape_seconds, drape_self, drape_inside,
-      drape_strain_p95, drape_simulated_s,
+      drape_min_clearance_mm, drape_strain_p95, drape_simulated_s,
       !a.drape        ? "off"
       : drape_settled ? "yes"
                       : "no",
@@ -341,7 +344,7 @@ void register_bench_garment(CLI::App& bench) {
       ->check(CLI::Range(0.0, 10.0));
   cmd->add_option("--sewing-iterations", args->sew.sewing_iterations, "phase A iterations")->check(CLI::Range(4, 100000));
   cmd->add_option("--relax-iterations", args->sew.relax_iterations, "phase B iteration limit")->check(CLI::Range(1, 100000));
-  cmd->add_option("--clearance-mm", args->sew.clearance_mm, "distance the garment keeps from the body")
+  cmd->add_option("--clearance-mm", args->sew.clearance_mm, "distance the garment keeps from the body (sewing and drape)")
       ->check(CLI::Range(0.0, 50.0));
   cmd->add_option("--seam-edge-weight", args->sew.seam_edge_weight, "stiffness of sewn seams against their pattern length")
       ->check(CLI::Range(0.0, 1e6));
