@@ -36,6 +36,7 @@ std::string write_stitches_json(const Pattern& pattern, const std::vector<Stitch
     for (const Stitch& st : s.stitches) {
       ojson j{{"a", side_json(pattern, st.a)}, {"b", side_json(pattern, st.b)}};
       if (st.same_direction) j["same_direction"] = true;
+      if (st.ease_ratio > 0) j["ease"] = st.ease_ratio;
       j["score"] = s.score;
       j["reason"] = s.reason;
       stitches.push_back(std::move(j));

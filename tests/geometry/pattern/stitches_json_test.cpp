@@ -21,11 +21,11 @@ Pattern two_panels() {
   return p;
 }
 
-TEST(StitchesJson, RoundTripKeepsSidesSpansAndDirection) {
+TEST(StitchesJson, RoundTripKeepsSidesSpansDirectionAndEase) {
   Pattern p = two_panels();
   std::vector<StitchSuggestion> s{
       {{Stitch{EdgeSpan{0, 1, 0, -1}, EdgeSpan{1, 3, 0, -1}, false}}, 0.91, "lengths 400/400 mm"},
-      {{Stitch{EdgeSpan{1, 1, 50, 350}, EdgeSpan{0, 3, 0, 300}, true}}, 0.75, "split"}};
+      {{Stitch{EdgeSpan{1, 1, 50, 350}, EdgeSpan{0, 3, 0, 300}, true, 1.25}}, 0.75, "split; eased"}};
   const std::string text = write_stitches_json(p, s);
   EXPECT_NE(text.find("\"tp-stitches\""), std::string::npos);
   EXPECT_NE(text.find("\"score\": 0.91"), std::string::npos);
@@ -38,10 +38,12 @@ TEST(StitchesJson, RoundTripKeepsSidesSpansAndDirection) {
   EXPECT_EQ((*back)[0].b.piece, 1);
   EXPECT_EQ((*back)[0].b.edge, 3);
   EXPECT_FALSE((*back)[0].same_direction);
+  EXPECT_EQ((*back)[0].ease_ratio, 0);
   EXPECT_DOUBLE_EQ((*back)[1].a.from_mm, 50);
   EXPECT_DOUBLE_EQ((*back)[1].a.to_mm, 350);
   EXPECT_DOUBLE_EQ((*back)[1].b.to_mm, 300);
   EXPECT_TRUE((*back)[1].same_direction);
+  EXPECT_DOUBLE_EQ((*back)[1].ease_ratio, 1.25);
   // The pattern passed in is not changed.
   EXPECT_TRUE(p.stitches.empty());
 }
