@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cstdio>
 #include <cmath>
 #include <numbers>
 #include <optional>
@@ -11,6 +12,7 @@
 #include "geometry/pattern/internal/free_edge_chains.h"
 #include "geometry/pattern/internal/text.h"
 #include "geometry/pattern/outline_segments.h"
+#include "geometry/pattern/validate.h"
 
 namespace tp::geometry {
 namespace {
@@ -409,6 +411,22 @@ std::vector<StitchSuggestion> suggest_stitches(const Pattern& pattern, const Sug
       taken[first_info[st.b.piece] + st.b.edge] = true;
     }
     out.push_back(std::move(*band));
+  }
+  // A suggested seam whose sides differ beyond the validator's tolerance is an eased one (a back
+  // shoulder eased onto the front): marked with its ratio, as importers mark theirs, so it is
+  // valid as suggested and reported with the eased seams.
+  for (StitchSuggestion& sg : out) {
+    double most = 0;
+    for (Stitch& st : sg.stitches)
+      if (st.ease_ratio == 0) {
+        st.ease_ratio = mismatch_ease_ratio(pattern, st);
+        most = std::max(most, st.ease_ratio);
+      }
+    if (most > 0) {
+      char ratio[32];
+      std::snprintf(ratio, sizeof ratio, "%.3f", most);
+      sg.reason += std::string("; eased (longer side up to ") + ratio + " times the shorter)";
+    }
   }
   return out;
 }

@@ -180,6 +180,13 @@ void check_stitches(const Pattern& pattern, const ValidationOptions& o, std::vec
 
 }  // namespace
 
+double mismatch_ease_ratio(const Pattern& pattern, const Stitch& stitch, const ValidationOptions& options) {
+  const double la = span_length_mm(pattern, stitch.a), lb = span_length_mm(pattern, stitch.b);
+  const double longer = std::max(la, lb), shorter = std::min(la, lb);
+  const double allowed = std::max(options.stitch_length_tolerance_mm, options.stitch_length_tolerance_ratio * longer);
+  return shorter > 0 && longer - shorter > allowed ? longer / shorter : 0;
+}
+
 std::vector<Error> find_pattern_problems(const Pattern& pattern, const ValidationOptions& options) {
   std::vector<Error> out;
   if (pattern.pieces.empty()) out.push_back(Error{ErrorCode::kInvalidPattern, "pattern has no pieces"});

@@ -24,6 +24,11 @@ struct ValidationOptions {
   bool require_counter_clockwise = true;
 };
 
+/// The ease ratio (longer side over shorter) a stitch whose sides differ by more than the
+/// stitched-length tolerance must be marked with to be valid; 0 when its sides agree within it
+/// (or a side is empty). Importers and the stitch suggester mark their mismatched stitches so.
+double mismatch_ease_ratio(const Pattern& pattern, const Stitch& stitch, const ValidationOptions& options = {});
+
 /// Every problem found, each an Error naming the piece, edge, notch or stitch; empty when sound.
 /// Checks: piece and edge names present and unique; at least 3 outline vertices; every edge has
 /// >= 2 finite points and a length >= min_edge_length_mm; consecutive edges join (closed outline);

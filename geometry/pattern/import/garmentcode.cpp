@@ -283,13 +283,8 @@ Result<Pattern> read_garmentcode(std::string_view text, const std::string& sourc
   // GarmentCode gathers by design (its `ruffle` lengthens one side of a stitch): a stitch whose
   // sides differ beyond the validator's tolerance is marked gathered with its ratio, so it is
   // sewn with the longer side distributed along the shorter, not refused.
-  const ValidationOptions tolerance;
-  for (Stitch& st : pattern.stitches) {
-    const double la = span_length_mm(pattern, st.a), lb = span_length_mm(pattern, st.b);
-    const double longer = std::max(la, lb), shorter = std::min(la, lb);
-    const double allowed = std::max(tolerance.stitch_length_tolerance_mm, tolerance.stitch_length_tolerance_ratio * longer);
-    if (shorter > 0 && longer - shorter > allowed) st.ease_ratio = longer / shorter;
-  }
+  for (Stitch& st : pattern.stitches)
+    if (const double r = mismatch_ease_ratio(pattern, st); r > 0) st.ease_ratio = r;
   if (options.fix_orientation)
     for (const std::string& n : orient_counter_clockwise(pattern))
       pattern.warnings.push_back(source_name + ": panel '" + n + "': outline was clockwise; reversed");

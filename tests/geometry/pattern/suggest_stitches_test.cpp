@@ -3,6 +3,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <set>
 
 #include "geometry/pattern/import/dxf_aama.h"
@@ -119,6 +121,35 @@ TEST(SuggestStitches, DxfSkirtSideSeamsAcrossATurnPoint) {
   EXPECT_TRUE(got.count("FRONT.e1 <-> BACK_r.e2"));
   EXPECT_TRUE(got.count("FRONT.e1_mirror <-> BACK_l.e1"));
   EXPECT_TRUE(got.count("BACK_l.e7 <-> BACK_r.e7"));
+  Pattern sewn = *r;
+  accept_suggestions(sewn, sug);
+  Status s = validate_pattern(sewn);
+  EXPECT_TRUE(s.has_value()) << s.error().what();
+}
+
+TEST(SuggestStitches, BellasEasedBackShoulderIsMarkedEasedWithItsRatio) {
+  // Bella's back shoulder (161.3 mm) is eased onto the front's (156.9 mm): beyond the default
+  // tolerance (1 mm), so the suggestion marks it eased with the ratio and says so; the seams
+  // whose sides agree stay plain, and the accepted pattern validates with the default tolerance.
+  auto r = load_freesewing_svg(tp::test::shared_data_dir() / "freesewing/bella-cisFemaleAdult42.svg");
+  ASSERT_TRUE(r.has_value()) << r.error().what();
+  auto sug = suggest_stitches(*r);
+  int eased = 0, plain = 0;
+  for (const auto& x : sug)
+    for (const Stitch& st : x.stitches) {
+      const double la = span_length_mm(*r, st.a), lb = span_length_mm(*r, st.b);
+      const double ratio = std::max(la, lb) / std::min(la, lb);
+      if (std::abs(la - lb) > std::max(1.0, 0.005 * std::max(la, lb))) {
+        ++eased;
+        EXPECT_NEAR(st.ease_ratio, ratio, 1e-12) << side(*r, st.a) << " <-> " << side(*r, st.b);
+        EXPECT_NE(x.reason.find("eased"), std::string::npos) << x.reason;
+      } else {
+        ++plain;
+        EXPECT_EQ(st.ease_ratio, 0) << side(*r, st.a) << " <-> " << side(*r, st.b);
+      }
+    }
+  EXPECT_EQ(eased, 2);  // the two shoulders, about 1.028 : 1
+  EXPECT_GT(plain, 10);
   Pattern sewn = *r;
   accept_suggestions(sewn, sug);
   Status s = validate_pattern(sewn);
