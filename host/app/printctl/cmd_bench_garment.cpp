@@ -93,8 +93,9 @@ std::string seam_lines(const geometry::Pattern& pattern, const geometry::Distort
   std::string out;
   for (const auto& sl : r.seams) {
     const geometry::Stitch& st = pattern.stitches[static_cast<size_t>(sl.stitch)];
-    char nums[160];
-    std::snprintf(nums, sizeof nums, " a_mm=%.2f b_mm=%.2f sewn_mm=%.2f diff=%.4f\n", sl.a_mm, sl.b_mm, sl.sewn_mm, sl.diff);
+    char nums[192];
+    std::snprintf(nums, sizeof nums, " a_mm=%.2f b_mm=%.2f sewn_mm=%.2f diff=%.4f ease=%.3f\n", sl.a_mm, sl.b_mm,
+                  sl.sewn_mm, sl.diff, st.ease_ratio);
     out += std::to_string(sl.stitch) + " " + side(st.a) + " " + side(st.b) + nums;
   }
   return out;
