@@ -20,6 +20,8 @@ constexpr double kCapDrop_mm = 20;
 // The arm's axis is found from its centres this far below the shoulders (mm).
 constexpr double kArmSlice1_mm = 200;
 constexpr double kArmSlice2_mm = 320;
+constexpr double kArmSliceStep_mm = 40;
+constexpr double kArmSliceLast_mm = 440;
 
 bool inside(const BodySdf& b, Vec3 p) { return b.query(p).distance_mm < 0; }
 
@@ -173,13 +175,18 @@ BodyLandmarks find_landmarks(const BodySdf& body) {
     centre.z += (extent(body, centre, {0, 0, 1}, reach) - extent(body, centre, {0, 0, -1}, reach)) / 2;
     return true;
   };
+  // An arm closer to the body is still joined to the torso 200 mm down: the slices go lower
+  // (kArmSliceStep_mm at a time) until one finds it apart, the second slice as far below that.
   for (int side : {1, -1}) {
     Vec3 a1, a2;
-    if (!arm_centre(side, L.shoulder_y - kArmSlice1_mm, a1)) continue;
+    double depth = kArmSlice1_mm;
+    while (depth <= kArmSliceLast_mm && !arm_centre(side, L.shoulder_y - depth, a1)) depth += kArmSliceStep_mm;
+    if (depth > kArmSliceLast_mm) continue;
     const Vec3 from = side > 0 ? L.shoulder_l : L.shoulder_r;
     Vec3& dir = side > 0 ? L.arm_dir_l : L.arm_dir_r;
     Vec3& top = side > 0 ? L.arm_top_l : L.arm_top_r;
-    if (arm_centre(side, L.shoulder_y - kArmSlice2_mm, a2) && norm(a2 - a1) > 0 && (a2.x - a1.x) * side > 0) {
+    if (arm_centre(side, L.shoulder_y - depth - (kArmSlice2_mm - kArmSlice1_mm), a2) && norm(a2 - a1) > 0 &&
+        (a2.x - a1.x) * side > 0) {
       dir = normalized(a2 - a1);
       // Where the axis passes the shoulder point: the sleeve cap's top.
       top = a1 + dir * dot(from - a1, dir);

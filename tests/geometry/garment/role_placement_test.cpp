@@ -11,8 +11,14 @@
 namespace tp::geometry {
 namespace {
 
-TEST(RolePlacement, ArmAxisFollowsTheDressFormsArm) {
-  BodyMeasurements m;  // arms at 45 degrees from vertical
+class RolePlacementArm : public ::testing::TestWithParam<double> {};
+
+// Arms at 45 and 30 degrees are apart from the torso 200 mm under the shoulders; at 25 degrees
+// they are not, and the slices go lower until they find them (before, the axis fell back to 45
+// degrees and the sleeves were placed beside the arm).
+TEST_P(RolePlacementArm, ArmAxisFollowsTheDressFormsArm) {
+  BodyMeasurements m;
+  m.arm_angle_deg = GetParam();
   auto body = samples::make_dress_form_sdf(m);
   ASSERT_TRUE(body) << body.error().message;
   const BodyLandmarks L = find_landmarks(**body);
@@ -28,6 +34,8 @@ TEST(RolePlacement, ArmAxisFollowsTheDressFormsArm) {
     EXPECT_LT(h.distance_mm, -15) << side;
   }
 }
+
+INSTANTIATE_TEST_SUITE_P(ArmAngles, RolePlacementArm, ::testing::Values(45.0, 30.0, 25.0));
 
 }  // namespace
 }  // namespace tp::geometry
