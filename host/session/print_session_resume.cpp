@@ -39,7 +39,8 @@ Status PrintSession::attach_or_open(const device::StatusMsg& st) {
     acked_next_ = next_send_ = swath_count_ = now->swath_next;
     printed_next_ = now->printed_next;
     reattach_held_until_ = now->swath_next;
-    reattach_held_bytes_ = identity_.swath_buffer_bytes - std::min<std::size_t>(now->free_bytes, identity_.swath_buffer_bytes);
+    reattach_held_bytes_ =
+        identity_.swath_buffer_bytes - std::min<std::size_t>(now->free_bytes, identity_.swath_buffer_bytes);
     planned_end_um_ = now->queued_fabric_um;
     session_log()->info("{} still open on the printer: swaths below {} printed (fabric at {}), below {} received; "
                         "resuming at swath {}",

@@ -228,7 +228,8 @@ void bench_one(const std::string& name, geometry::Pattern pattern, const geometr
       "off_body=%.4f "
       "unsewn=%zu start_inside=%d start_inside_pushed=%d start_max_push_mm=%.1f "
       "strain_mean=%.4f strain_p95=%.4f seam_len_diff_max=%.4f aligned=%s seconds=%.2f drape_seconds=%.2f "
-      "drape_self_intersections=%d drape_inside_body=%d drape_min_clearance_mm=%.1f drape_strain_p95=%.4f drape_simulated_s=%.3f "
+      "drape_self_intersections=%d drape_inside_body=%d drape_min_clearance_mm=%.1f drape_strain_p95=%.4f "
+      "drape_simulated_s=%.3f "
       "drape_settled=%s gathered_fraction=%.3f strain_p95_plain=%.4f strain_p95_eased=%.4f eased_area=%.3f "
       "seam_len_diff_max_plain=%.4f drape_strain_p95_plain=%.4f drape_seam_len_diff_max_plain=%.4f checks=%s%s%s\n",
       name.c_str(), o.solver == geometry::SewSolver::kXpbd ? "xpbd" : "arap", stats.levels, stats.coarse_edge_mm,
@@ -345,7 +346,8 @@ void register_bench_garment(CLI::App& bench) {
       ->check(CLI::Range(0.0, 10.0));
   cmd->add_option("--sewing-iterations", args->sew.sewing_iterations, "phase A iterations")->check(CLI::Range(4, 100000));
   cmd->add_option("--relax-iterations", args->sew.relax_iterations, "phase B iteration limit")->check(CLI::Range(1, 100000));
-  cmd->add_option("--clearance-mm", args->sew.clearance_mm, "distance the garment keeps from the body (sewing and drape)")
+  cmd->add_option("--clearance-mm", args->sew.clearance_mm,
+                  "distance the garment keeps from the body (sewing and drape)")
       ->check(CLI::Range(0.0, 50.0));
   cmd->add_option("--seam-edge-weight", args->sew.seam_edge_weight, "stiffness of sewn seams against their pattern length")
       ->check(CLI::Range(0.0, 1e6));
