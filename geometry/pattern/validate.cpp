@@ -130,6 +130,12 @@ void check_features(const Piece& piece, const std::string& who, std::vector<Erro
     problem(ErrorCode::kInvalidPattern, "grain line has no direction");
 }
 
+// How far two stitched spans may differ in length: the larger of the absolute and relative
+// tolerances, the latter of the longer span.
+double allowed_difference_mm(const ValidationOptions& o, double longer_mm) {
+  return std::max(o.stitch_length_tolerance_mm, o.stitch_length_tolerance_ratio * longer_mm);
+}
+
 void check_stitches(const Pattern& pattern, const ValidationOptions& o, std::vector<Error>& out) {
   for (size_t s = 0; s < pattern.stitches.size(); ++s) {
     const Stitch& st = pattern.stitches[s];
@@ -159,7 +165,7 @@ void check_stitches(const Pattern& pattern, const ValidationOptions& o, std::vec
     }
     if (!refs_ok) continue;
     double la = span_length_mm(pattern, st.a), lb = span_length_mm(pattern, st.b);
-    double allowed = std::max(o.stitch_length_tolerance_mm, o.stitch_length_tolerance_ratio * std::max(la, lb));
+    const double allowed = allowed_difference_mm(o, std::max(la, lb));
     if (st.ease_ratio > 0) {
       // Marked eased or gathered: the longer side may be up to ease_ratio times the shorter.
       const double longer = std::max(la, lb), shorter = std::min(la, lb);
@@ -183,8 +189,7 @@ void check_stitches(const Pattern& pattern, const ValidationOptions& o, std::vec
 double mismatch_ease_ratio(const Pattern& pattern, const Stitch& stitch, const ValidationOptions& options) {
   const double la = span_length_mm(pattern, stitch.a), lb = span_length_mm(pattern, stitch.b);
   const double longer = std::max(la, lb), shorter = std::min(la, lb);
-  const double allowed = std::max(options.stitch_length_tolerance_mm, options.stitch_length_tolerance_ratio * longer);
-  return shorter > 0 && longer - shorter > allowed ? longer / shorter : 0;
+  return shorter > 0 && longer - shorter > allowed_difference_mm(options, longer) ? longer / shorter : 0;
 }
 
 std::vector<Error> find_pattern_problems(const Pattern& pattern, const ValidationOptions& options) {
