@@ -80,6 +80,11 @@ TorsoSection section_at(const std::vector<Level>& lv, double y) {
           pchip(lv, &TorsoSection::exponent, y)};
 }
 
+// The neck's axis: from inside the torso, leaning slightly forward, up past the cut.
+std::array<Vec3, 2> neck_axis(const DressFormLandmarks& l) {
+  return {Vec3{0, l.nape_y - 40, -16}, Vec3{0, l.nape_y + 100, -8}};
+}
+
 // Polynomial smooth minimum: a union whose crease is rounded over `k` mm.
 double smooth_min(double a, double b, double k) {
   double h = std::max(k - std::abs(a - b), 0.0) / k;
@@ -139,6 +144,36 @@ TorsoSection dress_form_section(const BodyMeasurements& m, double y_mm) {
   return section_at(torso_levels(m, l), y_mm);
 }
 
+double dress_form_hps_to_waist_back_mm(const BodyMeasurements& m) {
+  const DressFormLandmarks l = dress_form_landmarks(m);
+  const std::vector<Level> levels = torso_levels(m, l);
+  const double x = l.neck_radius_mm;  // the high point of the shoulder: beside the neck
+  // The profile (y, z) at x: the neck's side on top of the shoulder, then the back from the
+  // shoulder's top down to the waist.
+  const auto [n0, n1] = neck_axis(l);
+  std::vector<Vec2> profile{{l.neck_top_y, n0.z + (n1.z - n0.z) * (l.neck_top_y - n0.y) / (n1.y - n0.y)}};
+  constexpr double kStep_mm = 1;
+  for (double y = l.neck_top_y; y > l.waist_y - kStep_mm / 2; y -= kStep_mm) {
+    const double at = std::max(y, l.waist_y);
+    const TorsoSection s = section_at(levels, at);
+    const double u = std::min(x / s.half_width_mm, 1.0);
+    profile.push_back({at, s.centre_z_mm - s.back_mm * std::pow(1 - std::pow(u, s.exponent), 1 / s.exponent)});
+  }
+  // A tape bridges hollows: the profile's outer hull (towards -z) from the top to the waist.
+  std::vector<Vec2> hull;
+  for (const Vec2& c : profile) {
+    while (hull.size() >= 2) {
+      const Vec2 a = hull[hull.size() - 2], b = hull.back();
+      if (c.x == a.x || b.y <= a.y + (c.y - a.y) * (b.x - a.x) / (c.x - a.x)) break;
+      hull.pop_back();  // b lies inside the line from a to c: the tape passes over it
+    }
+    hull.push_back(c);
+  }
+  double length = 0;
+  for (size_t i = 1; i < hull.size(); ++i) length += norm(hull[i] - hull[i - 1]);
+  return length;
+}
+
 Result<BodyMesh> make_dress_form(const BodyMeasurements& m, const DressFormOptions& options) {
   if (auto s = validate(m); !s) return std::unexpected(s.error().with_context("dress form"));
   if (!(options.grid_spacing_mm >= 2 && options.grid_spacing_mm <= 30))
@@ -147,7 +182,7 @@ Result<BodyMesh> make_dress_form(const BodyMeasurements& m, const DressFormOptio
   const std::vector<Level> levels = torso_levels(m, l);
   const Vec3 arm0 = l.arm_joint_left;
   const Vec3 arm1 = arm0 + l.arm_direction_left * (l.arm_length_mm - 0.3 * l.upper_arm_radius_mm);
-  const Vec3 neck0{0, l.nape_y - 40, -16}, neck1{0, l.nape_y + 100, -8};
+  const auto [neck0, neck1] = neck_axis(l);
   const double neck_cut_y = l.nape_y + 95;
 
   // Grid bounds: the torso's widest section, the arms' reach, a margin of 3 cells.

@@ -42,6 +42,12 @@ DressFormLandmarks dress_form_landmarks(const BodyMeasurements& m);
 /// bust, underbust, waist and hips at their landmark heights.
 TorsoSection dress_form_section(const BodyMeasurements& m, double y_mm);
 
+/// The length (mm) a tape measures on the dress form from the high point of the shoulder
+/// (beside the neck) over the shoulder and down the back to the waist, bridging hollows: the
+/// measurement FreeSewing calls hpsToWaistBack. It is longer than `back_length_mm` (the nape
+/// to the waist), by the shoulder's top and the shoulder blades.
+double dress_form_hps_to_waist_back_mm(const BodyMeasurements& m);
+
 /// Girth (mm) of a torso section: the perimeter of its superellipse.
 double section_girth_mm(const TorsoSection& s);
 

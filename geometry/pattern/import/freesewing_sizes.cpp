@@ -5,6 +5,8 @@
 #include <cstdlib>
 #include <string>
 
+#include "geometry/body/dress_form.h"
+
 namespace tp::geometry {
 namespace {
 
@@ -23,6 +25,8 @@ constexpr Graded kChest{925, 1}, kUnderbust{780, 1}, kWaist{750, 0.85}, kSeat{10
 constexpr double kShoulderSlope_deg = 13;
 // The dress form's nape sits at this fraction of the height (BodyMeasurements::nape_height_mm).
 constexpr double kNapeRatio = 0.859;
+// Steps fitting the form's nape to hpsToWaistBack (each leaves a fraction of a mm more).
+constexpr int kBackLengthSteps = 4;
 
 }  // namespace
 
@@ -49,14 +53,25 @@ std::optional<BodyMeasurements> freesewing_cis_female_adult(int size) {
   m.upper_arm_mm = graded(kBiceps, neck);
   m.wrist_mm = graded(kWrist, neck);
   m.shoulder_width_mm = graded(kShoulderToShoulder, neck);
-  m.back_length_mm = graded(kHpsToWaistBack, neck);
-  m.armscye_depth_mm = m.back_length_mm - graded(kWaistToArmhole, neck);
   m.arm_length_mm = graded(kShoulderToWrist, neck);
   m.waist_to_hip_mm = graded(kWaistToSeat, neck);
   m.waist_to_knee_mm = graded(kWaistToKnee, neck);
   m.bust_span_mm = graded(kBustSpan, neck);
   m.shoulder_slope_deg = kShoulderSlope_deg;
-  m.height_mm = (graded(kWaistToFloor, neck) + m.back_length_mm) / kNapeRatio;
+  // FreeSewing's hpsToWaistBack runs from the high point of the shoulder over the shoulder and
+  // down the back; the form's back length is the nape to the waist, tens of mm shorter (bella
+  // 42 hung 60 mm above the waist of a form whose nape-to-waist was hpsToWaistBack). The nape
+  // is set where the form measures hpsToWaistBack; the waist stays at waistToFloor and the
+  // armpit at waistToArmhole above it. Each step moves the nape by the length still missing.
+  const double hps_to_waist_back = graded(kHpsToWaistBack, neck);
+  const auto set_back_length = [&](double back_mm) {
+    m.back_length_mm = back_mm;
+    m.armscye_depth_mm = back_mm - graded(kWaistToArmhole, neck);
+    m.height_mm = (graded(kWaistToFloor, neck) + back_mm) / kNapeRatio;
+  };
+  set_back_length(hps_to_waist_back);
+  for (int step = 0; step < kBackLengthSteps; ++step)
+    set_back_length(m.back_length_mm + hps_to_waist_back - dress_form_hps_to_waist_back_mm(m));
   return m;
 }
 
