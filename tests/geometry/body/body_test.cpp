@@ -51,6 +51,12 @@ TEST(Measurements, ValidateNamesTheField) {
   s = validate(m);
   ASSERT_FALSE(s);
   EXPECT_NE(s.error().message.find("neck_mm -3"), std::string::npos) << s.error().message;
+  // An armpit at the bust's height: the form's sections would run out of order.
+  m = {};
+  m.armscye_depth_mm = 0.6 * m.back_length_mm;
+  s = validate(m);
+  ASSERT_FALSE(s);
+  EXPECT_NE(s.error().message.find("armscye_depth_mm"), std::string::npos) << s.error().message;
 }
 
 TEST(Measurements, ParseOverridesAndRejectsBadText) {
