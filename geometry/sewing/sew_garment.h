@@ -47,7 +47,9 @@ struct SewOptions {
   double xpbd_close_mm_s = 250;
   double xpbd_done_gap_mm = 1;
   double xpbd_duration_s = 8;
-  double xpbd_stall_s = 0.5;  ///< also stops once the widest gap has not narrowed by 1 % for this long
+  /// Also stops once the widest gap has not narrowed by 1 % for this long (four times as long
+  /// once it is within twice xpbd_done_gap_mm).
+  double xpbd_stall_s = 0.5;
   double xpbd_self_thickness_mm = 2;
   /// XPBD on two levels: the fine garment carried over from the coarse one is then settled on its
   /// own for at most this long (simulated s; no weight, no friction; it stops earlier once still).

@@ -339,8 +339,11 @@ Result<XpbdStats> run_xpbd(ClothModel& cloth, const BodySdf& body, const XpbdPar
       st.stitch_gap_max_mm = gap;
       if (gap < p.stitch_done_mm) break;
       // Stalled: the widest gap has not narrowed by 1 % for the stall time (a seam held open).
+      // Within twice the done gap it has four times as long: penelope 34's tight waistband
+      // stopped 1.03 mm open by the 1 % rule while still closing, by 0.01 mm in 0.5 s.
       if (gap < 0.99 * best_gap) best_gap = gap, best_at_s = st.simulated_s;
-      if (st.simulated_s - best_at_s > p.stitch_stall_s) break;
+      const double stall_s = gap < 2 * p.stitch_done_mm ? 4 * p.stitch_stall_s : p.stitch_stall_s;
+      if (st.simulated_s - best_at_s > stall_s) break;
       continue;
     }
     // Settled: the RMS speed over each of the last windows below the settle speed. The
