@@ -29,7 +29,7 @@ struct XpbdSewParams {
   double close_mm_s = 100;       ///< speed at which every seam's allowed gap shrinks
   double done_gap_mm = 1;        ///< sewn once every stitched pair is closer than this
   double duration_s = 8;         ///< simulated time limit
-  double stall_s = 0.5;          ///< stop once the widest gap has not narrowed by 1 % for this long
+  double stall_s = 0.5;          ///< stop once the widest gap has not narrowed by 1 % for this long (x 4 near done)
   double clearance_mm = 3;       ///< distance kept from the body
   double self_thickness_mm = 2;  ///< distance kept between layers
   double damping_per_s = 10;

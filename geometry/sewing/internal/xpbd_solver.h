@@ -41,7 +41,8 @@ struct XpbdParams {
   /// Sewing stops once every stitched pair is closer than this (and the cloth has had the time
   /// to close its widest gap); the settle test is not used.
   double stitch_done_mm = 1;
-  /// Sewing also stops once the widest gap has not narrowed by 1 % for this long (simulated s).
+  /// Sewing also stops once the widest gap has not narrowed by 1 % for this long (simulated s;
+  /// four times as long once the gap is within twice stitch_done_mm).
   double stitch_stall_s = 0.5;
   int threads = 2;  ///< strain passes, body queries and pair search; results do not depend on it
   /// Called at each broad phase with the share of the time limit simulated (progress), may be empty.
