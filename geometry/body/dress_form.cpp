@@ -122,7 +122,7 @@ DressFormLandmarks dress_form_landmarks(const BodyMeasurements& m) {
   l.hip_y = l.waist_y - m.waist_to_hip_mm;
   l.knee_y = l.waist_y - m.waist_to_knee_mm;
   l.bottom_y = l.knee_y - 60;
-  l.bust_y = l.waist_y + 0.44 * m.back_length_mm;
+  l.bust_y = l.waist_y + m.bust_above_waist_mm();
   l.underbust_y = l.bust_y - 0.2 * m.back_length_mm;
   l.armpit_y = l.nape_y - m.armscye_depth_mm;
   l.neck_radius_mm = m.neck_mm / (2 * std::numbers::pi);

@@ -67,7 +67,7 @@ Status validate(const BodyMeasurements& m) {
   if (!(s = less(m.bust_span_mm, "bust_span_mm", m.bust_mm * 0.35, "0.35 x bust_mm"))) return s;
   // The dress form's sections run through the bust (0.44 x back_length_mm above the waist) and
   // then the armpit: an armpit at or under the bust leaves them out of order.
-  if (!(s = less(0.44 * m.back_length_mm, "the bust's height above the waist (0.44 x back_length_mm)",
+  if (!(s = less(m.bust_above_waist_mm(), "the bust's height above the waist (0.44 x back_length_mm)",
                  m.back_length_mm - m.armscye_depth_mm, "the armpit's (back_length_mm - armscye_depth_mm)")))
     return s;
   if (!(s = less(m.wrist_mm, "wrist_mm", m.upper_arm_mm, "upper_arm_mm"))) return s;

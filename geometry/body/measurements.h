@@ -32,6 +32,8 @@ struct BodyMeasurements {
   double waist_height_mm() const { return 0.859 * height_mm - back_length_mm; }
   /// Height of the nape above the floor, mm.
   double nape_height_mm() const { return 0.859 * height_mm; }
+  /// Height of the bust points above the waist, mm (from the back length).
+  double bust_above_waist_mm() const { return 0.44 * back_length_mm; }
 };
 
 /// Checks that every measurement is positive and plausible relative to the others; the

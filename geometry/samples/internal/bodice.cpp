@@ -140,7 +140,7 @@ BodiceBlock bodice_block(const BodyMeasurements& m, const BodiceOptions& o) {
   fr.underarm = {front_w, std::sqrt(front_side * front_side - 20 * 20)};
   fr.armhole = cubic_points(fr.underarm, fr.underarm + Vec2{-65, 0}, fr.shoulder_tip + Vec2{-18, -75}, fr.shoulder_tip, 48);
   fr.neckline = quad_points(fr.neck_point, {nw, fr.centre_neck.y}, fr.centre_neck, 24);
-  fr.apex = {m.bust_span_mm / 2, 0.44 * bl + 0.6 * b.bust_dart_mm};
+  fr.apex = {m.bust_span_mm / 2, m.bust_above_waist_mm() + 0.6 * b.bust_dart_mm};
   fr.waist_intake = fr.waist_side.x - (waist_q + 5);
   b.bust_dart_centre_mm = front_side - kBustDartBelowUnderarmMm - b.bust_dart_mm / 2;
 
