@@ -26,6 +26,11 @@ constexpr double kRelativeSingular = 1e-9;
 constexpr int kSeamSweeps = 4;
 /// A strain-limit correction along an edge shorter than this (mm) has no direction.
 constexpr double kZeroLength_mm = 1e-12;
+/// A widest stitch gap within kNearDoneGaps done gaps is still closing, if slowly: it has
+/// kNearDoneStallTimes the stall time (penelope 34's tight waistband stopped 1.03 mm open by
+/// the 1 % rule while closing by 0.01 mm in 0.5 s).
+constexpr double kNearDoneGaps = 2;
+constexpr double kNearDoneStallTimes = 4;
 /// The strain (and bending) projections run in rounds of 2^3 vertex-disjoint blocks (whatever the
 /// thread count), the bands between one round's blocks split again in the next, then the rest in
 /// one thread.
@@ -339,10 +344,9 @@ Result<XpbdStats> run_xpbd(ClothModel& cloth, const BodySdf& body, const XpbdPar
       st.stitch_gap_max_mm = gap;
       if (gap < p.stitch_done_mm) break;
       // Stalled: the widest gap has not narrowed by 1 % for the stall time (a seam held open).
-      // Within twice the done gap it has four times as long: penelope 34's tight waistband
-      // stopped 1.03 mm open by the 1 % rule while still closing, by 0.01 mm in 0.5 s.
       if (gap < 0.99 * best_gap) best_gap = gap, best_at_s = st.simulated_s;
-      const double stall_s = gap < 2 * p.stitch_done_mm ? 4 * p.stitch_stall_s : p.stitch_stall_s;
+      const double stall_s =
+          gap < kNearDoneGaps * p.stitch_done_mm ? kNearDoneStallTimes * p.stitch_stall_s : p.stitch_stall_s;
       if (st.simulated_s - best_at_s > stall_s) break;
       continue;
     }
