@@ -105,6 +105,43 @@ int count_self_intersections(const Garment& g, std::vector<int>* per_piece, cons
   return count;
 }
 
+int count_body_crossings(const Garment& g, const BodyMesh& body, std::vector<int>* per_piece,
+                         const std::vector<bool>* skip) {
+  const std::vector<SoupTriangle> tris = garment_triangles(g, skip);
+  if (per_piece) per_piece->assign(g.pieces.size(), 0);
+  // Handles 0..n-1 are the garment's triangles, n.. the body's.
+  using Box = CGAL::Box_intersection_d::Box_with_handle_d<double, 3, size_t, CGAL::Box_intersection_d::ID_EXPLICIT>;
+  auto triangle = [](Vec3 a, Vec3 b, Vec3 c) {
+    return K::Triangle_3(K::Point_3(a.x, a.y, a.z), K::Point_3(b.x, b.y, b.z), K::Point_3(c.x, c.y, c.z));
+  };
+  std::vector<K::Triangle_3> cloth, skin;
+  std::vector<Box> cloth_boxes, skin_boxes;
+  for (const SoupTriangle& t : tris) {
+    cloth.push_back(triangle(g.vertices_mm[t.v[0]], g.vertices_mm[t.v[1]], g.vertices_mm[t.v[2]]));
+    cloth_boxes.emplace_back(cloth.back().bbox(), cloth.size() - 1);
+  }
+  for (const auto& t : body.triangles) {
+    const Vec3 a = body.vertices_mm[t[0]], b = body.vertices_mm[t[1]], c = body.vertices_mm[t[2]];
+    if (0.5 * norm(cross(b - a, c - a)) < kDegenerateArea_mm2) continue;
+    skin.push_back(triangle(a, b, c));
+    skin_boxes.emplace_back(skin.back().bbox(), tris.size() + skin.size() - 1);
+  }
+  std::vector<char> crossing(tris.size(), 0);
+  CGAL::box_intersection_d(cloth_boxes.begin(), cloth_boxes.end(), skin_boxes.begin(), skin_boxes.end(),
+                           [&](const Box& a, const Box& b) {
+                             const size_t i = a.handle();
+                             if (!crossing[i] && CGAL::do_intersect(cloth[i], skin[b.handle() - tris.size()]))
+                               crossing[i] = 1;
+                           });
+  int count = 0;
+  for (size_t i = 0; i < tris.size(); ++i) {
+    if (!crossing[i]) continue;
+    ++count;
+    if (per_piece) ++(*per_piece)[static_cast<size_t>(tris[i].piece)];
+  }
+  return count;
+}
+
 FitReport check_fit(const Pattern& pattern, const Garment& g, const BodySdf* body,
                     const std::vector<std::vector<double>>& stitch_gaps_mm, const FitLimits& limits) {
   FitReport r;
@@ -200,6 +237,18 @@ FitReport check_fit(const Pattern& pattern, const Garment& g, const BodySdf* bod
                               fmt(100.0 * r.inside_body / r.vertices, "%.2f") + " %, limit " +
                               fmt(100 * limits.max_inside_body, "%.2f") + " %), most of piece '" +
                               pattern.pieces[static_cast<size_t>(p)].name + "'",
+                          view_of(piece_centre(p), frame)});
+  }
+  // Triangles the body pokes through (their vertices may all be outside it).
+  std::vector<int> crossing_piece;
+  r.body_crossings = count_body_crossings(g, body->mesh(), &crossing_piece, &unsewn);
+  if (r.triangles > 0 && r.body_crossings > limits.max_body_crossings * r.triangles) {
+    int p = worst_of(std::vector<double>(crossing_piece.begin(), crossing_piece.end()));
+    r.failures.push_back({"body_crossings",
+                          std::to_string(r.body_crossings) + " triangles cross the body's surface (" +
+                              fmt(100.0 * r.body_crossings / r.triangles, "%.2f") + " % of triangles, limit " +
+                              fmt(100 * limits.max_body_crossings, "%.2f") + " %), most of piece '" +
+                              pattern.pieces[static_cast<size_t>(p)].name + "': the body shows through the cloth",
                           view_of(piece_centre(p), frame)});
   }
 

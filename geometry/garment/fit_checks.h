@@ -15,6 +15,10 @@ struct FitLimits {
   double max_stitch_gap_mm = 2;           ///< largest distance between a stitch's two sides before merging
   double max_self_intersections = 0.002;  ///< intersecting triangle pairs / triangles
   double max_inside_body = 0.002;         ///< vertices inside the body / vertices
+  /// Triangles crossing the body's surface / triangles. 1 (not limited) by default: contact is
+  /// per vertex, so a mesh coarser than the body's curvature crosses it between vertices (the
+  /// figure is reported; a job may limit it).
+  double max_body_crossings = 1;
   double max_off_body = 0.05;             ///< area farther than off_body_distance_mm / area
   double off_body_distance_mm = 150;
 };
@@ -29,6 +33,9 @@ struct FitReport {
   int self_intersections = 0;        ///< triangle pairs that intersect and share no vertex
   int vertices = 0;
   int inside_body = 0;               ///< vertices with negative signed distance to the body
+  /// Triangles crossing the body's surface: a body feature sharper than the mesh poking through
+  /// the cloth between vertices that are all outside it.
+  int body_crossings = 0;
   double body_distance_p50_mm = 0;   ///< unsigned distance of the vertices to the body surface
   double body_distance_p95_mm = 0;
   double off_body = 0;               ///< area fraction farther than off_body_distance_mm from the body
@@ -36,8 +43,9 @@ struct FitReport {
   /// the body and self-intersection checks.
   std::vector<int> unsewn_pieces;
   bool pass = true;
-  /// One per failed check: "stitch_gap", "self_intersections", "inside_body" or "off_body"; a
-  /// sentence naming the figure, the limit and the worst stitch or piece; the preview to look at.
+  /// One per failed check: "stitch_gap", "self_intersections", "inside_body", "body_crossings"
+  /// or "off_body"; a sentence naming the figure, the limit and the worst stitch or piece; the
+  /// preview to look at.
   struct Failure {
     std::string check;
     std::string message;
@@ -52,6 +60,12 @@ struct FitReport {
 /// Pieces flagged in `skip` (by index) are left out.
 int count_self_intersections(const Garment& garment, std::vector<int>* per_piece = nullptr,
                              const std::vector<bool>* skip = nullptr);
+
+/// Triangles of the garment that intersect a triangle of `body` (CGAL box intersection for
+/// candidates, exact predicates for the test); degenerate triangles are skipped. Optionally the
+/// count per piece, in pattern order; pieces flagged in `skip` are left out.
+int count_body_crossings(const Garment& garment, const BodyMesh& body, std::vector<int>* per_piece = nullptr,
+                         const std::vector<bool>* skip = nullptr);
 
 /// Runs every check on the final `garment` of `pattern`. `stitch_gaps_mm` holds, per stitch,
 /// the distances between its two sides' vertex pairs at the end of sewing (SewStats; empty

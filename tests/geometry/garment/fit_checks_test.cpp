@@ -45,6 +45,7 @@ TEST(FitChecks, SewnTubeOnItsBodyPasses) {
   EXPECT_LT(r.stitch_gap_max_mm, 2);
   EXPECT_EQ(r.self_intersections, 0);
   EXPECT_EQ(r.inside_body, 0);
+  EXPECT_EQ(r.body_crossings, 0);
   EXPECT_NEAR(r.body_distance_p50_mm, 15, 6);  // radius 115 round radius 100
   EXPECT_EQ(r.off_body, 0);
 }
@@ -119,6 +120,35 @@ TEST(FitChecks, CrossingTrianglesCountNeighboursDoNot) {
   std::vector<int> per_piece;
   EXPECT_EQ(count_self_intersections(g, &per_piece), 1);
   EXPECT_EQ(per_piece[0], 2);
+}
+
+TEST(FitChecks, BodyPokingThroughATriangleFailsWithEveryVertexOutside) {
+  // One flat triangle at y = 300 across a cylinder of radius 100: its three vertices are outside
+  // the body (x = -300, x = 300, z = 400), its middle (z = 90 near x = 0) inside. Vertex tests
+  // see nothing; the triangle crosses the body's surface.
+  BodySdf body = cylinder_body(100, 0, 600);
+  Pattern p;
+  p.pieces = {rectangle("front", 100, 100)};
+  Garment g;
+  GarmentPiece gp;
+  g.vertices_mm = {{-300, 300, 90}, {300, 300, 90}, {0, 300, 400}};
+  gp.mesh.vertices_mm = {{0, 0}, {600, 0}, {300, 310}};
+  gp.mesh.triangles = {{0, 1, 2}};
+  gp.vertex_3d = {0, 1, 2};
+  g.pieces = {gp};
+  // Reported by default, a failure where the job limits it.
+  EXPECT_TRUE(check_fit(p, g, &body, {}).pass);
+  FitLimits strict;
+  strict.max_body_crossings = 0;
+  FitReport r = check_fit(p, g, &body, {}, strict);
+  EXPECT_EQ(r.inside_body, 0);
+  EXPECT_EQ(r.body_crossings, 1);
+  EXPECT_EQ(count_body_crossings(g, body.mesh()), 1);
+  ASSERT_TRUE(failed(r, "body_crossings"));
+  EXPECT_NE(r.failures.back().message.find("piece 'front'"), std::string::npos) << r.failures.back().message;
+  // Moved 200 mm out to the front it clears the body.
+  for (Vec3& v : g.vertices_mm) v.z += 200;
+  EXPECT_EQ(count_body_crossings(g, body.mesh()), 0);
 }
 
 TEST(AlignToBody, PatternPlacedAroundAnotherBodyIsMovedOntoThisOne) {

@@ -21,9 +21,11 @@ TEST_P(SampleSizes, SewnGarmentPassesTheFitChecks) {
   auto g = samples::make_garment(garment, size, o);
   ASSERT_TRUE(g) << g.error().what();
   const FitReport fit = check_fit(g->pattern, g->garment, g->body.get(), g->stats.stitch_gap_mm);
-  std::printf("figure garment=%s size=%s triangles=%d self_intersections=%d inside_body=%d stitch_gap_max_mm=%.2f\n",
-              garment.c_str(), size.c_str(), fit.triangles, fit.self_intersections, fit.inside_body,
-              fit.stitch_gap_max_mm);
+  std::printf(
+      "figure garment=%s size=%s triangles=%d self_intersections=%d inside_body=%d body_crossings=%d "
+      "stitch_gap_max_mm=%.2f\n",
+      garment.c_str(), size.c_str(), fit.triangles, fit.self_intersections, fit.inside_body, fit.body_crossings,
+      fit.stitch_gap_max_mm);
   std::string failed;
   for (const auto& f : fit.failures) failed += f.message + "; ";
   EXPECT_TRUE(fit.pass) << garment << " " << size << ": " << failed;
