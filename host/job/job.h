@@ -21,6 +21,7 @@ struct GarmentChecksSpec {
   double max_stitch_gap_mm = 2;              ///< largest distance between a stitch's two sides before merging
   double max_self_intersections = 0.002;     ///< intersecting triangle pairs, fraction of triangles
   double max_inside_body = 0.002;            ///< vertices inside the body, fraction of vertices
+  double max_body_crossings = 1;             ///< triangles crossing the body's surface, fraction (1: not limited)
   double max_off_body = 0.05;                ///< area farther than 150 mm from the body, fraction
 };
 

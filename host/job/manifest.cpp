@@ -84,10 +84,11 @@ void read_garment(FieldReader g, const JobPackage* pkg, GarmentSpec& spec) {
   if (auto v = g.number("suggest_min_score", false, 0, 1)) spec.suggest_min_score = *v;
   read_asset(g, "stitches_file", false, pkg, spec.stitches_file);
   if (auto c = g.object("checks", false)) {
-    c->reject_unknown({"stitch_gap", "self_intersections", "inside_body", "off_body"});
+    c->reject_unknown({"stitch_gap", "self_intersections", "inside_body", "body_crossings", "off_body"});
     if (auto v = c->length_mm("stitch_gap", false, 0, 1000)) spec.checks.max_stitch_gap_mm = *v;
     if (auto v = c->number("self_intersections", false, 0, 1)) spec.checks.max_self_intersections = *v;
     if (auto v = c->number("inside_body", false, 0, 1)) spec.checks.max_inside_body = *v;
+    if (auto v = c->number("body_crossings", false, 0, 1)) spec.checks.max_body_crossings = *v;
     if (auto v = c->number("off_body", false, 0, 1)) spec.checks.max_off_body = *v;
   }
   read_material(g, spec.material);

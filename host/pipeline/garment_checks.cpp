@@ -10,6 +10,7 @@ geometry::FitLimits fit_limits(const GarmentChecksSpec& spec) {
   l.max_stitch_gap_mm = spec.max_stitch_gap_mm;
   l.max_self_intersections = spec.max_self_intersections;
   l.max_inside_body = spec.max_inside_body;
+  l.max_body_crossings = spec.max_body_crossings;
   l.max_off_body = spec.max_off_body;
   return l;
 }
@@ -30,6 +31,7 @@ nlohmann::json checks_json(const geometry::Pattern& pattern, const geometry::Fit
           {"self_intersections", r.self_intersections},
           {"triangles", r.triangles},
           {"inside_body", r.inside_body},
+          {"body_crossings", r.body_crossings},
           {"vertices", r.vertices},
           {"body_distance_p50_mm", r.body_distance_p50_mm},
           {"body_distance_p95_mm", r.body_distance_p95_mm},
@@ -38,6 +40,7 @@ nlohmann::json checks_json(const geometry::Pattern& pattern, const geometry::Fit
            {{"stitch_gap_mm", limits.max_stitch_gap_mm},
             {"self_intersections", limits.max_self_intersections},
             {"inside_body", limits.max_inside_body},
+            {"body_crossings", limits.max_body_crossings},
             {"off_body", limits.max_off_body},
             {"off_body_distance_mm", limits.off_body_distance_mm}}},
           {"failures", failures}};

@@ -113,6 +113,7 @@ Result<geometry::Garment> drape_job_garment(PipelineState& ps, const std::vector
              {"simulated_s", st.simulated_s},
              {"max_speed_mm_s", st.max_speed_mm_s},
              {"self_intersections", geometry::count_self_intersections(*g)},
+             {"body_crossings", geometry::count_body_crossings(*g, ps.body->mesh())},
              {"wall_s", st.seconds}};
   return std::move(*g);
 }

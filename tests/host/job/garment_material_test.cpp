@@ -1,4 +1,4 @@
-// tests/host/job/garment_material_test.cpp: garment.material, drape and correspondence in job.json.
+// tests/host/job/garment_material_test.cpp: garment.material, drape, correspondence, sewing and checks in job.json.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -72,6 +72,22 @@ TEST_F(GarmentMaterialTest, SewingSolverIsAutoByDefaultOrArapOrXpbd) {
   job = load(R"(, "sewing": "springs")");
   ASSERT_FALSE(job);
   EXPECT_NE(job.error().message.find("/garment/sewing"), std::string::npos) << job.error().message;
+}
+
+TEST_F(GarmentMaterialTest, FitCheckLimitsAreReadAndBadOnesNamed) {
+  auto job = load("");
+  ASSERT_TRUE(job) << job.error().message;
+  EXPECT_EQ(job->garment.checks.max_body_crossings, 1);  // reported, not limited
+  job = load(R"(, "checks": {"body_crossings": 0, "inside_body": 0.01})");
+  ASSERT_TRUE(job) << job.error().message;
+  EXPECT_EQ(job->garment.checks.max_body_crossings, 0);
+  EXPECT_EQ(job->garment.checks.max_inside_body, 0.01);
+  job = load(R"(, "checks": {"body_crossings": 2})");
+  ASSERT_FALSE(job);
+  EXPECT_NE(job.error().message.find("/garment/checks/body_crossings"), std::string::npos) << job.error().message;
+  job = load(R"(, "checks": {"body_crossing": 0})");
+  ASSERT_FALSE(job);
+  EXPECT_NE(job.error().message.find("body_crossing"), std::string::npos) << job.error().message;
 }
 
 }  // namespace
