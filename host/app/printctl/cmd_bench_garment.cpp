@@ -183,7 +183,7 @@ void bench_one(const std::string& name, geometry::Pattern pattern, const geometr
   }
   // The drape in the bench's fabric: its time and whether it stayed untangled and outside the body.
   double drape_seconds = 0;
-  int drape_self = -1, drape_inside = -1;
+  int drape_self = -1, drape_inside = -1, drape_crossings = -1;
   double drape_strain_p95 = -1, drape_strain_p95_plain = -1, drape_simulated_s = 0, drape_seam_plain = -1;
   double drape_min_clearance_mm = 0;
   bool drape_settled = false;
@@ -201,6 +201,7 @@ void bench_one(const std::string& name, geometry::Pattern pattern, const geometr
     drape_simulated_s = ds.simulated_s;
     drape_settled = ds.settled;
     drape_self = geometry::count_self_intersections(*dg);
+    drape_crossings = geometry::count_body_crossings(*dg, body.mesh());
     const geometry::DistortionReport dr = geometry::measure_distortion(pattern, *dg, &body);
     drape_inside = dr.inside_body;
     drape_strain_p95 = dr.strain_p95;
@@ -224,21 +225,24 @@ void bench_one(const std::string& name, geometry::Pattern pattern, const geometr
       "coarse_fallback_self_intersections=%d mesh_edge_mm=%.1f vertices=%d stitches=%zu suggested=%d "
       "stitch_gap_max_mm=%.2f "
       "stitch_gap_p95_mm=%.2f "
-      "self_intersections=%d inside_body=%d min_clearance_mm=%.1f body_distance_p50_mm=%.1f body_distance_p95_mm=%.1f "
+      "self_intersections=%d inside_body=%d body_crossings=%d min_clearance_mm=%.1f body_distance_p50_mm=%.1f "
+      "body_distance_p95_mm=%.1f "
       "off_body=%.4f "
       "unsewn=%zu start_inside=%d start_inside_pushed=%d start_max_push_mm=%.1f "
       "strain_mean=%.4f strain_p95=%.4f seam_len_diff_max=%.4f aligned=%s seconds=%.2f drape_seconds=%.2f "
-      "drape_self_intersections=%d drape_inside_body=%d drape_min_clearance_mm=%.1f drape_strain_p95=%.4f "
+      "drape_self_intersections=%d drape_inside_body=%d drape_body_crossings=%d drape_min_clearance_mm=%.1f "
+      "drape_strain_p95=%.4f "
       "drape_simulated_s=%.3f "
       "drape_settled=%s gathered_fraction=%.3f strain_p95_plain=%.4f strain_p95_eased=%.4f eased_area=%.3f "
       "seam_len_diff_max_plain=%.4f drape_strain_p95_plain=%.4f drape_seam_len_diff_max_plain=%.4f checks=%s%s%s\n",
       name.c_str(), o.solver == geometry::SewSolver::kXpbd ? "xpbd" : "arap", stats.levels, stats.coarse_edge_mm,
       stats.coarse_discarded, stats.coarse_fallback_gap_mm, stats.coarse_fallback_self_intersections, o.target_edge_mm,
       r.vertices, pattern.stitches.size(), suggested, fit.stitch_gap_max_mm, fit.stitch_gap_p95_mm,
-      fit.self_intersections, fit.inside_body, r.min_clearance_mm, fit.body_distance_p50_mm, fit.body_distance_p95_mm,
-      fit.off_body, fit.unsewn_pieces.size(), start.inside_before, start.inside_after, start.max_push_mm, r.strain_mean,
-      r.strain_p95, r.seam_len_diff_max, aligned ? "yes" : "no", seconds, drape_seconds, drape_self, drape_inside,
-      drape_min_clearance_mm, drape_strain_p95, drape_simulated_s,
+      fit.self_intersections, fit.inside_body, fit.body_crossings, r.min_clearance_mm, fit.body_distance_p50_mm,
+      fit.body_distance_p95_mm, fit.off_body, fit.unsewn_pieces.size(), start.inside_before, start.inside_after,
+      start.max_push_mm, r.strain_mean, r.strain_p95, r.seam_len_diff_max, aligned ? "yes" : "no", seconds,
+      drape_seconds, drape_self, drape_inside, drape_crossings, drape_min_clearance_mm, drape_strain_p95,
+      drape_simulated_s,
       !a.drape        ? "off"
       : drape_settled ? "yes"
                       : "no",
@@ -377,6 +381,9 @@ void register_bench_garment(CLI::App& bench) {
   cmd->add_option("--max-self-intersections", args->limits.max_self_intersections,
                   "fit check: intersecting triangle pairs per triangle")->check(CLI::Range(0.0, 1.0));
   cmd->add_option("--max-inside-body", args->limits.max_inside_body, "fit check: fraction of vertices inside the body")
+      ->check(CLI::Range(0.0, 1.0));
+  cmd->add_option("--max-body-crossings", args->limits.max_body_crossings,
+                  "fit check: fraction of triangles crossing the body's surface")
       ->check(CLI::Range(0.0, 1.0));
   cmd->add_option("--max-off-body", args->limits.max_off_body, "fit check: area fraction over 150 mm from the body")
       ->check(CLI::Range(0.0, 1.0));
