@@ -60,6 +60,12 @@ std::string fmt(double v, const char* spec = "%.1f") {
   return buf;
 }
 
+// "<n> <what> (<share> %<of>, limit <limit> %)": a count against its limit, a share of `total`.
+std::string count_against_limit(int n, const std::string& what, int total, double limit, const char* of) {
+  return std::to_string(n) + " " + what + " (" + fmt(100.0 * n / total, "%.2f") + " %" + of + ", limit " +
+         fmt(100 * limit, "%.2f") + " %)";
+}
+
 // Index of the largest entry (the first on ties), or -1 when all are zero.
 int worst_of(const std::vector<double>& v) {
   int best = -1;
@@ -198,10 +204,9 @@ FitReport check_fit(const Pattern& pattern, const Garment& g, const BodySdf* bod
     std::vector<double> w(si_piece.begin(), si_piece.end());
     int p = worst_of(w);
     r.failures.push_back({"self_intersections",
-                          std::to_string(r.self_intersections) + " self-intersecting triangle pairs (" +
-                              fmt(100.0 * r.self_intersections / r.triangles, "%.2f") + " % of triangles, limit " +
-                              fmt(100 * limits.max_self_intersections, "%.2f") + " %): tangled, most in piece '" +
-                              pattern.pieces[static_cast<size_t>(p)].name + "'",
+                          count_against_limit(r.self_intersections, "self-intersecting triangle pairs", r.triangles,
+                                              limits.max_self_intersections, " of triangles") +
+                              ": tangled, most in piece '" + pattern.pieces[static_cast<size_t>(p)].name + "'",
                           view_of(piece_centre(p), frame)});
   }
   if (!body) {
@@ -232,12 +237,11 @@ FitReport check_fit(const Pattern& pattern, const Garment& g, const BodySdf* bod
   r.body_distance_p95_mm = percentile(dist, 0.95);
   if (r.vertices > 0 && r.inside_body > limits.max_inside_body * r.vertices) {
     int p = worst_of(inside_piece);
-    r.failures.push_back({"inside_body",
-                          std::to_string(r.inside_body) + " vertices inside the body (" +
-                              fmt(100.0 * r.inside_body / r.vertices, "%.2f") + " %, limit " +
-                              fmt(100 * limits.max_inside_body, "%.2f") + " %), most of piece '" +
-                              pattern.pieces[static_cast<size_t>(p)].name + "'",
-                          view_of(piece_centre(p), frame)});
+    r.failures.push_back(
+        {"inside_body",
+         count_against_limit(r.inside_body, "vertices inside the body", r.vertices, limits.max_inside_body, "") +
+             ", most of piece '" + pattern.pieces[static_cast<size_t>(p)].name + "'",
+         view_of(piece_centre(p), frame)});
   }
   // Triangles the body pokes through (their vertices may all be outside it).
   std::vector<int> crossing_piece;
@@ -245,10 +249,10 @@ FitReport check_fit(const Pattern& pattern, const Garment& g, const BodySdf* bod
   if (r.triangles > 0 && r.body_crossings > limits.max_body_crossings * r.triangles) {
     int p = worst_of(std::vector<double>(crossing_piece.begin(), crossing_piece.end()));
     r.failures.push_back({"body_crossings",
-                          std::to_string(r.body_crossings) + " triangles cross the body's surface (" +
-                              fmt(100.0 * r.body_crossings / r.triangles, "%.2f") + " % of triangles, limit " +
-                              fmt(100 * limits.max_body_crossings, "%.2f") + " %), most of piece '" +
-                              pattern.pieces[static_cast<size_t>(p)].name + "': the body shows through the cloth",
+                          count_against_limit(r.body_crossings, "triangles cross the body's surface", r.triangles,
+                                              limits.max_body_crossings, " of triangles") +
+                              ", most of piece '" + pattern.pieces[static_cast<size_t>(p)].name +
+                              "': the body shows through the cloth",
                           view_of(piece_centre(p), frame)});
   }
 
