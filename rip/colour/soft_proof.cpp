@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <unordered_map>
 #include <vector>
 
@@ -15,6 +16,38 @@
 #include "rip/colour/proof_check.h"
 
 namespace tp::rip {
+namespace {
+
+// The design's colour decides its proof's (one transform for the whole image), so the colour
+// difference is computed once per design colour: a marker of tens of megapixels holds far
+// fewer colours. Direct-mapped on the colour's low 20 bits; a clash computes afresh, the
+// figure is the same either way.
+class DeltaEMemo {
+ public:
+  DeltaEMemo() : slots_(std::size_t{1} << kBits, Slot{kEmpty, 0}) {}
+
+  double get(const geometry::Rgba8& design, const geometry::Rgba8& proof) {
+    const std::uint32_t key = (static_cast<std::uint32_t>(design.r) << 16) | (design.g << 8) | design.b;
+    Slot& slot = slots_[key & ((std::uint32_t{1} << kBits) - 1)];
+    if (slot.key != key) {
+      slot.key = key;
+      slot.de00 = device::delta_e_2000(device::xyz_to_lab(device::srgb8_to_xyz(design.r, design.g, design.b)),
+                                       device::xyz_to_lab(device::srgb8_to_xyz(proof.r, proof.g, proof.b)));
+    }
+    return slot.de00;
+  }
+
+ private:
+  static constexpr int kBits = 20;
+  static constexpr std::uint32_t kEmpty = 0xffffffff;  // no 24-bit colour
+  struct Slot {
+    std::uint32_t key;
+    double de00;
+  };
+  std::vector<Slot> slots_;
+};
+
+}  // namespace
 
 Result<SoftProofSummary> soft_proof(const geometry::ImageRgba8& design, const std::filesystem::path& profile,
                                     geometry::ImageRgba8& proof, geometry::ImageRgba8* overlay) {
@@ -60,6 +93,7 @@ Result<SoftProofSummary> soft_proof(const geometry::ImageRgba8& design, const st
   if (overlay) *overlay = proof;
   SoftProofSummary s;
   std::size_t oog = 0;
+  DeltaEMemo memo;
   for (std::size_t i = 0; i < design.pixels.size(); ++i) {
     const geometry::Rgba8& d = design.pixels[i];
     if (d.a == 0 || (d.r >= 250 && d.g >= 250 && d.b >= 250)) {
@@ -68,9 +102,7 @@ Result<SoftProofSummary> soft_proof(const geometry::ImageRgba8& design, const st
       continue;
     }
     ++s.printed_pixels;
-    const geometry::Rgba8& p = proof.pixels[i];
-    const double de = device::delta_e_2000(device::xyz_to_lab(device::srgb8_to_xyz(d.r, d.g, d.b)),
-                                           device::xyz_to_lab(device::srgb8_to_xyz(p.r, p.g, p.b)));
+    const double de = memo.get(d, proof.pixels[i]);
     s.worst_de00 = std::max(s.worst_de00, de);
     if (de > kGamutTolerance_de00) {
       ++oog;

@@ -4,7 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
+#include <vector>
 
 #include "rip/colour/ink_converter.h"
 
@@ -28,6 +31,35 @@ TEST(SoftProof, GreysStayCloseAndSaturatedGreenIsOutOfGamut) {
   EXPECT_EQ(overlay.pixels[1].g, 255);
   EXPECT_EQ(overlay.pixels[1].r, 0);
   EXPECT_EQ(proof.pixels[2].r, 255) << "unprinted stays";
+}
+
+// Colours are tallied once each (a marker holds tens of megapixels, far fewer colours); two
+// colours that share a slot of that tally (the same green, blue and low four bits of red) must
+// each keep their own figure.
+TEST(SoftProof, ColoursSharingATallySlotKeepTheirOwnDifference) {
+  if (!std::filesystem::exists(kDefaultCmykProfilePath)) GTEST_SKIP() << "no " << kDefaultCmykProfilePath;
+  const geometry::Rgba8 blue{0, 0, 255, 255}, violet{240, 0, 255, 255};
+  auto alone = [](geometry::Rgba8 c) {
+    geometry::ImageRgba8 design, proof;
+    design.width_px = 1;
+    design.height_px = 1;
+    design.pixels = {c};
+    auto s = soft_proof(design, kDefaultCmykProfilePath, proof, nullptr);
+    EXPECT_TRUE(s);
+    return s ? s->worst_de00 : 0.0;
+  };
+  const double de_blue = alone(blue), de_violet = alone(violet);
+  ASSERT_GT(std::abs(de_blue - de_violet), 0.5) << "the test needs two different figures";
+  for (const auto& order : {std::vector{blue, violet, blue, violet}, std::vector{violet, blue, violet, blue}}) {
+    geometry::ImageRgba8 design, proof;
+    design.width_px = 4;
+    design.height_px = 1;
+    design.pixels = order;
+    auto s = soft_proof(design, kDefaultCmykProfilePath, proof, nullptr);
+    ASSERT_TRUE(s) << s.error().message;
+    EXPECT_EQ(s->printed_pixels, 4u);
+    EXPECT_DOUBLE_EQ(s->worst_de00, std::max(de_blue, de_violet));
+  }
 }
 
 TEST(SoftProof, NamesAProfileItCannotRead) {
