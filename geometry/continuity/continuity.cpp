@@ -11,6 +11,7 @@
 
 #include "geometry/allowance/allowance_widths.h"
 #include "geometry/allowance/marks.h"
+#include "geometry/common/thread_pool.h"
 #include "geometry/continuity/ciede2000.h"
 #include "geometry/design/internal/allowance_source.h"
 #include "geometry/design/internal/band_mesh.h"
@@ -41,29 +42,59 @@ Rgba8 pixel_at(const PieceRenderer& r, int piece, Vec2 p, double mm_per_px) {
 // How many of the worst sample pairs the report keeps.
 constexpr size_t kWorstKept = 8;
 
-// Renders both pixels, returns their difference and keeps the pair if it is among the worst.
-// Without a sampler of its own the colours are the renderer's; a sampler may skip a pair (nullopt).
-std::optional<double> difference(const Pattern& pattern, const PieceRenderer& r, const ContinuityOptions& o, int pa,
-                                 Vec2 a, int pb, Vec2 b, double mm_per_px, std::vector<SamplePair>& worst) {
+// Two piece-local points whose colours should match, and what comparing them gave.
+struct SamplePairJob {
+  int pa = -1;
+  Vec2 a;
+  int pb = -1;
+  Vec2 b;
+};
+struct SampleResult {
+  std::optional<double> de00;  ///< nullopt: skipped (by the sampler, or by the allowance's filters)
   Rgba8 ca{}, cb{};
-  double de = 0;
+};
+
+// Renders both pixels and returns their difference. Without a sampler of its own the colours
+// are the renderer's; a sampler may skip a pair (nullopt). Safe to call from several threads.
+SampleResult compare(const PieceRenderer& r, const ContinuityOptions& o, const SamplePairJob& j, double mm_per_px) {
+  SampleResult out;
   if (o.sample) {
-    const auto la = o.sample(pa, a);
-    if (!la) return std::nullopt;
-    const auto lb = o.sample(pb, b);
-    if (!lb) return std::nullopt;
-    de = ciede2000(*la, *lb);
+    const auto la = o.sample(j.pa, j.a);
+    if (!la) return out;
+    const auto lb = o.sample(j.pb, j.b);
+    if (!lb) return out;
+    out.de00 = ciede2000(*la, *lb);
   } else {
-    ca = pixel_at(r, pa, a, mm_per_px);
-    cb = pixel_at(r, pb, b, mm_per_px);
-    de = ciede2000(srgb_over_white_to_lab(ca), srgb_over_white_to_lab(cb));
+    out.ca = pixel_at(r, j.pa, j.a, mm_per_px);
+    out.cb = pixel_at(r, j.pb, j.b, mm_per_px);
+    out.de00 = ciede2000(srgb_over_white_to_lab(out.ca), srgb_over_white_to_lab(out.cb));
   }
+  return out;
+}
+
+// Keeps the pair if it is among the worst; called in sample order, so ties keep one order.
+void keep_worst(const Pattern& pattern, const SamplePairJob& j, const SampleResult& res,
+                std::vector<SamplePair>& worst) {
+  const double de = *res.de00;
   if (worst.size() < kWorstKept || de > worst.back().de00) {
-    worst.push_back({de, pattern.pieces[static_cast<size_t>(pa)].name, pattern.pieces[static_cast<size_t>(pb)].name, a, b, ca, cb});
+    worst.push_back({de, pattern.pieces[static_cast<size_t>(j.pa)].name, pattern.pieces[static_cast<size_t>(j.pb)].name,
+                     j.a, j.b, res.ca, res.cb});
     std::sort(worst.begin(), worst.end(), [](const SamplePair& x, const SamplePair& y) { return x.de00 > y.de00; });
     if (worst.size() > kWorstKept) worst.pop_back();
   }
-  return de;
+}
+
+// Samples handed to a thread at a time.
+constexpr int kSamplesPerTask = 256;
+
+// Runs fn(i) for i in [0, count) on the pool, in tasks of kSamplesPerTask.
+template <class Fn>
+void for_samples(ThreadPool& pool, size_t count, Fn&& fn) {
+  const int tasks = static_cast<int>((count + kSamplesPerTask - 1) / kSamplesPerTask);
+  pool.parallel_for(tasks, [&](int task, int) {
+    const size_t end = std::min(count, static_cast<size_t>(task + 1) * kSamplesPerTask);
+    for (size_t i = static_cast<size_t>(task) * kSamplesPerTask; i < end; ++i) fn(i);
+  });
 }
 
 double distance_to_outline(const Polygon& poly, Vec2 p) {
@@ -113,9 +144,13 @@ Result<ContinuityReport> measure_continuity(const Pattern& pattern, const Garmen
   ContinuityReport report;
   report.dpi = dpi;
 
-  // Seams: pairs of pixels centred on the same 3D point, one in each piece.
-  std::map<std::tuple<int, int, int, int>, std::vector<double>> seams;
-  std::vector<double> all_seams;
+  ThreadPool pool(options.threads);
+
+  // Seams: pairs of pixels centred on the same 3D point, one in each piece. Listed in order,
+  // compared on the pool, gathered in order: the same figures for any thread count.
+  using SeamKey = std::tuple<int, int, int, int>;
+  std::vector<SamplePairJob> seam_jobs;
+  std::vector<SeamKey> seam_keys;
   for (int p = 0; p < surface.piece_count(); ++p) {
     const auto& chart = surface.chart(p);
     const auto& V = chart.piece->mesh.vertices_mm;
@@ -129,17 +164,25 @@ Result<ContinuityReport> measure_continuity(const Pattern& pattern, const Garmen
       const Vec2 a0 = V[static_cast<size_t>(seg.a)], a1 = V[static_cast<size_t>(seg.b)];
       const Vec2 b0 = W[static_cast<size_t>(ps.a)], b1 = W[static_cast<size_t>(ps.b)];
       const int n = std::max(1, static_cast<int>(std::ceil(norm(a1 - a0) / spacing)));
-      auto& bucket = seams[{p, seg.edge, seg.partner_piece, ps.edge}];
       for (int i = 0; i < n; ++i) {
         const double t = (i + 0.5) / n;
         const double tb = seg.partner_reversed ? 1 - t : t;
-        const auto de = difference(pattern, renderer, options, p, a0 + (a1 - a0) * t, seg.partner_piece,
-                                   b0 + (b1 - b0) * tb, mm_per_px, report.worst_seam_samples);
-        if (!de) continue;
-        bucket.push_back(*de);
-        all_seams.push_back(*de);
+        seam_jobs.push_back({p, a0 + (a1 - a0) * t, seg.partner_piece, b0 + (b1 - b0) * tb});
+        seam_keys.emplace_back(p, seg.edge, seg.partner_piece, ps.edge);
       }
     }
+  }
+  std::vector<SampleResult> seam_results(seam_jobs.size());
+  for_samples(pool, seam_jobs.size(),
+              [&](size_t i) { seam_results[i] = compare(renderer, options, seam_jobs[i], mm_per_px); });
+  std::map<SeamKey, std::vector<double>> seams;
+  std::vector<double> all_seams;
+  for (size_t i = 0; i < seam_jobs.size(); ++i) {
+    auto& bucket = seams[seam_keys[i]];
+    if (!seam_results[i].de00) continue;
+    keep_worst(pattern, seam_jobs[i], seam_results[i], report.worst_seam_samples);
+    bucket.push_back(*seam_results[i].de00);
+    all_seams.push_back(*seam_results[i].de00);
   }
   for (auto& [key, values] : seams) {
     if (values.empty()) continue;
@@ -177,40 +220,59 @@ Result<ContinuityReport> measure_continuity(const Pattern& pattern, const Garmen
       };
       const auto& chart = surface.chart(p);
       const auto& V = chart.piece->mesh.vertices_mm;
-      std::map<std::tuple<int, int, int>, std::vector<double>> groups;
+      // Every (segment, position, depth) in order; each is checked and compared on the pool.
+      struct Candidate {
+        SeamCoordinates sc;
+        int edge;
+      };
+      std::vector<Candidate> candidates;
       for (size_t k = 0; k < chart.segments.size(); ++k) {
         const auto& seg = chart.segments[k];
         const double w = widths->width_mm[static_cast<size_t>(seg.edge)];
         if (w <= 0) continue;
         const double step = std::max(spacing, kAllowanceSpacing_mm);
         const int n = std::max(1, static_cast<int>(std::ceil(norm(V[static_cast<size_t>(seg.b)] - V[static_cast<size_t>(seg.a)]) / step)));
-        for (int i = 0; i < n; ++i) {
-          for (double f : options.depth_fractions) {
-            const SeamCoordinates sc{static_cast<int>(k), (i + 0.5) / n, f * w};
-            const Vec2 x = source.seam_point(p, sc);
-            const SeamCoordinates back = source.seam_coordinates(p, x);
-            if (back.segment != sc.segment || norm(source.seam_point(p, back) - x) > kRoundTrip_mm ||
-                std::abs(back.d_mm - sc.d_mm) > kRoundTrip_mm)
-              continue;
-            if (!internal::inside_polygon(cut, x) || distance_to_outline(cut, x) < kEdgeMargin_px * mm_per_px) continue;
-            if (near_mark(x)) continue;
-            const auto s = source.source(p, sc);
-            if (s.location.triangle < 0 || norm(surface.chart_position(s.piece, s.location) - s.position_mm) > kClamp_mm) continue;
-            // A pixel astride a line where the print source changes (the mitre at a corner between
-            // a seam and a hem, or between two partners) shows either side: not a copy to measure.
-            bool astride = false;
-            for (Vec2 o : {Vec2{0.5, 0}, Vec2{-0.5, 0}, Vec2{0, 0.5}, Vec2{0, -0.5}}) {
-              const auto n = source.source(p, x + o * mm_per_px);
-              astride |= n.piece != s.piece || n.category != s.category;
-            }
-            if (astride) continue;
-            const auto de = difference(pattern, renderer, options, p, x, s.piece, s.position_mm, mm_per_px,
-                                       report.worst_allowance_samples);
-            if (!de) continue;
-            groups[{seg.edge, s.piece, s.category}].push_back(*de);
-            all_allowance.push_back(*de);
-          }
+        for (int i = 0; i < n; ++i)
+          for (double f : options.depth_fractions)
+            candidates.push_back({SeamCoordinates{static_cast<int>(k), (i + 0.5) / n, f * w}, seg.edge});
+      }
+      struct Checked {
+        SamplePairJob job;
+        int source_piece = -1, category = 0;
+        SampleResult result;  // de00 nullopt: skipped
+      };
+      std::vector<Checked> checked(candidates.size());
+      for_samples(pool, candidates.size(), [&](size_t c) {
+        const SeamCoordinates& sc = candidates[c].sc;
+        const Vec2 x = source.seam_point(p, sc);
+        const SeamCoordinates back = source.seam_coordinates(p, x);
+        if (back.segment != sc.segment || norm(source.seam_point(p, back) - x) > kRoundTrip_mm ||
+            std::abs(back.d_mm - sc.d_mm) > kRoundTrip_mm)
+          return;
+        if (!internal::inside_polygon(cut, x) || distance_to_outline(cut, x) < kEdgeMargin_px * mm_per_px) return;
+        if (near_mark(x)) return;
+        const auto s = source.source(p, sc);
+        if (s.location.triangle < 0 || norm(surface.chart_position(s.piece, s.location) - s.position_mm) > kClamp_mm)
+          return;
+        // A pixel astride a line where the print source changes (the mitre at a corner between
+        // a seam and a hem, or between two partners) shows either side: not a copy to measure.
+        for (Vec2 o : {Vec2{0.5, 0}, Vec2{-0.5, 0}, Vec2{0, 0.5}, Vec2{0, -0.5}}) {
+          const auto n = source.source(p, x + o * mm_per_px);
+          if (n.piece != s.piece || n.category != s.category) return;
         }
+        Checked& out = checked[c];
+        out.job = {p, x, s.piece, s.position_mm};
+        out.source_piece = s.piece;
+        out.category = s.category;
+        out.result = compare(renderer, options, out.job, mm_per_px);
+      });
+      std::map<std::tuple<int, int, int>, std::vector<double>> groups;
+      for (size_t c = 0; c < candidates.size(); ++c) {
+        const Checked& ch = checked[c];
+        if (!ch.result.de00) continue;
+        keep_worst(pattern, ch.job, ch.result, report.worst_allowance_samples);
+        groups[{candidates[c].edge, ch.source_piece, ch.category}].push_back(*ch.result.de00);
+        all_allowance.push_back(*ch.result.de00);
       }
       for (auto& [key, values] : groups) {
         const auto [e, q, cat] = key;

@@ -68,6 +68,9 @@ struct ContinuityOptions {
   /// Set: the colour at a piece-local point (mm) as something else shows it, for example the
   /// printed fabric read where the marker placed the piece; nullopt skips the sample pair.
   std::function<std::optional<Lab>(int piece, Vec2 at_mm)> sample;
+  /// Threads comparing sample pairs (0: every core); `sample` is then called from all of them.
+  /// The figures are the same for any count.
+  int threads = 0;
 };
 
 /// Samples every stitched seam at pairs of pixels centred on the same 3D point in both pieces,

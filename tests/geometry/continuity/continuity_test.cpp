@@ -4,7 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <cmath>
+#include <memory>
 #include <numbers>
 
 #include "geometry/design/make_piece_renderer.h"
@@ -41,13 +43,25 @@ class ShiftedRenderer : public PieceRenderer {
   Vec2 shift_;
 };
 
-TEST(Continuity, SeamsAndAllowancesOfACylindricalProjectionMatch) {
-  auto g = test::gore_skirt();
-  Finishing f;
-  f.marks = MarkMode::kNone;
-  auto r = make_piece_renderer(g.pattern, g.garment, ramp_design(), f);
-  ASSERT_TRUE(r) << r.error().what();
-  auto rep = measure_continuity(g.pattern, g.garment, f, **r, 100);
+// The gore skirt with the ramp printed on it, no marks: what most tests here measure.
+class Continuity : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    auto made = make_piece_renderer(g.pattern, g.garment, ramp_design(), f);
+    ASSERT_TRUE(made) << made.error().what();
+    r = std::move(*made);
+  }
+  test::TestGarment g = test::gore_skirt();
+  Finishing f = [] {
+    Finishing x;
+    x.marks = MarkMode::kNone;
+    return x;
+  }();
+  std::unique_ptr<PieceRenderer> r;
+};
+
+TEST_F(Continuity, SeamsAndAllowancesOfACylindricalProjectionMatch) {
+  auto rep = measure_continuity(g.pattern, g.garment, f, *r, 100);
   ASSERT_TRUE(rep) << rep.error().what();
   EXPECT_EQ(rep->seam_list.size(), 8u);
   EXPECT_GT(rep->seams.samples, 1000u);
@@ -65,13 +79,8 @@ TEST(Continuity, SeamsAndAllowancesOfACylindricalProjectionMatch) {
   EXPECT_NE(json.find("\"de00_p95\""), std::string::npos);
 }
 
-TEST(Continuity, AShiftedPieceShowsAsASeamDifference) {
-  auto g = test::gore_skirt();
-  Finishing f;
-  f.marks = MarkMode::kNone;
-  auto r = make_piece_renderer(g.pattern, g.garment, ramp_design(), f);
-  ASSERT_TRUE(r) << r.error().what();
-  ShiftedRenderer shifted(**r, 2, {20, 0});
+TEST_F(Continuity, AShiftedPieceShowsAsASeamDifference) {
+  ShiftedRenderer shifted(*r, 2, {20, 0});
   auto rep = measure_continuity(g.pattern, g.garment, f, shifted, 100);
   ASSERT_TRUE(rep) << rep.error().what();
   double worst = 0;
@@ -80,27 +89,50 @@ TEST(Continuity, AShiftedPieceShowsAsASeamDifference) {
   EXPECT_GT(worst, 3.0);
 }
 
+// The pairs are compared on several threads and gathered in order: the same report, worst
+// samples and their order included, for any thread count.
+TEST_F(Continuity, TheReportIsTheSameForAnyThreadCount) {
+  ShiftedRenderer shifted(*r, 2, {20, 0});  // differences to rank
+  std::vector<ContinuityReport> reports;
+  for (int threads : {1, 2, 3}) {
+    ContinuityOptions o;
+    o.threads = threads;
+    auto rep = measure_continuity(g.pattern, g.garment, f, shifted, 100, o);
+    ASSERT_TRUE(rep) << rep.error().what();
+    reports.push_back(std::move(*rep));
+  }
+  ASSERT_GT(reports[0].seams.max, 3.0);
+  ASSERT_EQ(reports[0].worst_seam_samples.size(), 8u);
+  for (size_t i = 1; i < reports.size(); ++i) {
+    EXPECT_EQ(continuity_json(reports[i]), continuity_json(reports[0])) << "threads " << i + 1;
+    for (auto list : {&ContinuityReport::worst_seam_samples, &ContinuityReport::worst_allowance_samples}) {
+      const auto &a = reports[0].*list, &b = reports[i].*list;
+      ASSERT_EQ(a.size(), b.size());
+      for (size_t k = 0; k < a.size(); ++k) {
+        EXPECT_EQ(a[k].de00, b[k].de00) << k;
+        EXPECT_EQ(a[k].piece_a, b[k].piece_a) << k;
+        EXPECT_EQ(a[k].at_a_mm.x, b[k].at_a_mm.x) << k;
+        EXPECT_EQ(a[k].at_b_mm.y, b[k].at_b_mm.y) << k;
+      }
+    }
+  }
+}
+
 // The printed-seam measure reads the same sample pairs through a sampler of its own (host: the
 // printed fabric where the marker put each piece); here one that renders as the contone measure does.
-TEST(Continuity, ASamplerReadsTheSamePairsAndMaySkipSome) {
-  auto g = test::gore_skirt();
-  Finishing f;
-  f.marks = MarkMode::kNone;
-  auto r = make_piece_renderer(g.pattern, g.garment, ramp_design(), f);
-  ASSERT_TRUE(r) << r.error().what();
-  auto contone = measure_continuity(g.pattern, g.garment, f, **r, 100);
+TEST_F(Continuity, ASamplerReadsTheSamePairsAndMaySkipSome) {
+  auto contone = measure_continuity(g.pattern, g.garment, f, *r, 100);
   ASSERT_TRUE(contone) << contone.error().what();
   const double mm_per_px = 25.4 / 100;
   ContinuityOptions o;
-  int calls = 0;
+  std::atomic<int> calls = 0;  // the sampler is called from every thread
   o.sample = [&](int piece, Vec2 p) -> std::optional<Lab> {
     ++calls;
     Rgba8 px{};
-    (*r)->render(piece, Affine2{mm_per_px, 0, p.x - 0.5 * mm_per_px, 0, -mm_per_px, p.y + 0.5 * mm_per_px}, 1, 1, &px,
-                 1);
+    r->render(piece, Affine2{mm_per_px, 0, p.x - 0.5 * mm_per_px, 0, -mm_per_px, p.y + 0.5 * mm_per_px}, 1, 1, &px, 1);
     return srgb_over_white_to_lab(px);
   };
-  auto same = measure_continuity(g.pattern, g.garment, f, **r, 100, o);
+  auto same = measure_continuity(g.pattern, g.garment, f, *r, 100, o);
   ASSERT_TRUE(same) << same.error().what();
   EXPECT_GT(calls, 0);
   EXPECT_EQ(same->seams.samples, contone->seams.samples);
@@ -113,7 +145,7 @@ TEST(Continuity, ASamplerReadsTheSamePairsAndMaySkipSome) {
     if (piece == 2) return std::nullopt;
     return Lab{50 + 0 * p.x, 0, 0};
   };
-  auto partial = measure_continuity(g.pattern, g.garment, f, **r, 100, o);
+  auto partial = measure_continuity(g.pattern, g.garment, f, *r, 100, o);
   ASSERT_TRUE(partial) << partial.error().what();
   EXPECT_LT(partial->seams.samples, contone->seams.samples);
   EXPECT_GT(partial->seams.samples, 0u);
@@ -121,11 +153,8 @@ TEST(Continuity, ASamplerReadsTheSamePairsAndMaySkipSome) {
   for (const auto& s : partial->seam_list) EXPECT_TRUE(s.piece_a != "gore2" && s.piece_b != "gore2") << s.piece_a;
 }
 
-TEST(Continuity, RejectsABadDpi) {
-  auto g = test::gore_skirt();
-  auto r = make_piece_renderer(g.pattern, g.garment, ramp_design(), Finishing{});
-  ASSERT_TRUE(r);
-  auto rep = measure_continuity(g.pattern, g.garment, Finishing{}, **r, 0);
+TEST_F(Continuity, RejectsABadDpi) {
+  auto rep = measure_continuity(g.pattern, g.garment, f, *r, 0);
   ASSERT_FALSE(rep);
   EXPECT_NE(rep.error().message.find("dpi"), std::string::npos);
 }
