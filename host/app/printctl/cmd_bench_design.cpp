@@ -102,15 +102,18 @@ void bench_garment(const std::string& name, const BenchDesignArgs& a) {
   std::vector<geometry::PieceImage> images;
   const std::size_t px = render_all(**renderer, a.dpi, a.threads, a.out.empty() ? nullptr : &images);
   const double t2 = now_s(), c2 = process_cpu_s();
-  auto rep = geometry::measure_continuity(sample->pattern, sample->garment, finishing, **renderer, a.dpi);
+  geometry::ContinuityOptions measure;
+  measure.threads = a.threads;
+  auto rep = geometry::measure_continuity(sample->pattern, sample->garment, finishing, **renderer, a.dpi, measure);
   if (!rep) die("garment '" + name + "': " + rep.error().what(), 1);
+  const double t3 = now_s();
   std::printf(
       "garment=%s dpi=%g seam_de00_mean=%.3f seam_de00_p95=%.3f seam_de00_max=%.3f allowance_de00_p95=%.3f "
       "seconds=%.2f build_seconds=%.2f render_seconds=%.2f cpu_seconds=%.2f mpx=%.1f seam_samples=%zu "
-      "allowance_samples=%zu allowance_de00_mean=%.3f layers=%zu\n",
+      "allowance_samples=%zu allowance_de00_mean=%.3f layers=%zu continuity_seconds=%.2f threads=%d\n",
       name.c_str(), a.dpi, rep->seams.mean, rep->seams.p95, rep->seams.max, rep->allowance.p95, t2 - t0, t1 - t0,
       t2 - t1, c2 - c0, static_cast<double>(px) / 1e6, rep->seams.samples, rep->allowance.samples, rep->allowance.mean,
-      design.layers.size());
+      design.layers.size(), t3 - t2, measure.threads);
   if (a.detail) {
     for (const auto& sc : rep->seam_list)
       std::printf("  seam %s.%s ~ %s.%s samples=%zu de00_mean=%.3f de00_p95=%.3f de00_max=%.3f\n", sc.piece_a.c_str(),
@@ -215,7 +218,8 @@ void register_bench_design(CLI::App& bench) {
   cmd->add_option("--garment", args->garments, "sample garment (repeatable; default: all four)");
   cmd->add_option("--dpi", args->dpi, "sampling resolution")->check(CLI::PositiveNumber);
   cmd->add_option("--size", args->size, "garment size (see printctl garment)");
-  cmd->add_option("--threads", args->threads, "threads for building and rendering")->check(CLI::PositiveNumber);
+  cmd->add_option("--threads", args->threads, "threads for building, rendering and measuring")
+      ->check(CLI::PositiveNumber);
   cmd->add_flag("--throughput", args->throughput, "measure render throughput at 600 dpi instead");
   cmd->add_option("--out", args->out, "write each rendered piece as a PNG here");
   cmd->add_flag("--detail", args->detail, "also print every seam's and every allowance's figures");
