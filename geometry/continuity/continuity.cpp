@@ -221,11 +221,7 @@ Result<ContinuityReport> measure_continuity(const Pattern& pattern, const Garmen
       const auto& chart = surface.chart(p);
       const auto& V = chart.piece->mesh.vertices_mm;
       // Every (segment, position, depth) in order; each is checked and compared on the pool.
-      struct Candidate {
-        SeamCoordinates sc;
-        int edge;
-      };
-      std::vector<Candidate> candidates;
+      std::vector<SeamCoordinates> candidates;
       for (size_t k = 0; k < chart.segments.size(); ++k) {
         const auto& seg = chart.segments[k];
         const double w = widths->width_mm[static_cast<size_t>(seg.edge)];
@@ -233,17 +229,16 @@ Result<ContinuityReport> measure_continuity(const Pattern& pattern, const Garmen
         const double step = std::max(spacing, kAllowanceSpacing_mm);
         const int n = std::max(1, static_cast<int>(std::ceil(norm(V[static_cast<size_t>(seg.b)] - V[static_cast<size_t>(seg.a)]) / step)));
         for (int i = 0; i < n; ++i)
-          for (double f : options.depth_fractions)
-            candidates.push_back({SeamCoordinates{static_cast<int>(k), (i + 0.5) / n, f * w}, seg.edge});
+          for (double f : options.depth_fractions) candidates.push_back({static_cast<int>(k), (i + 0.5) / n, f * w});
       }
       struct Checked {
-        SamplePairJob job;
-        int source_piece = -1, category = 0;
+        SamplePairJob job;  // job.pb: the piece the allowance copies
+        int category = 0;
         SampleResult result;  // de00 nullopt: skipped
       };
       std::vector<Checked> checked(candidates.size());
       for_samples(pool, candidates.size(), [&](size_t c) {
-        const SeamCoordinates& sc = candidates[c].sc;
+        const SeamCoordinates& sc = candidates[c];
         const Vec2 x = source.seam_point(p, sc);
         const SeamCoordinates back = source.seam_coordinates(p, x);
         if (back.segment != sc.segment || norm(source.seam_point(p, back) - x) > kRoundTrip_mm ||
@@ -262,7 +257,6 @@ Result<ContinuityReport> measure_continuity(const Pattern& pattern, const Garmen
         }
         Checked& out = checked[c];
         out.job = {p, x, s.piece, s.position_mm};
-        out.source_piece = s.piece;
         out.category = s.category;
         out.result = compare(renderer, options, out.job, mm_per_px);
       });
@@ -271,7 +265,8 @@ Result<ContinuityReport> measure_continuity(const Pattern& pattern, const Garmen
         const Checked& ch = checked[c];
         if (!ch.result.de00) continue;
         keep_worst(pattern, ch.job, ch.result, report.worst_allowance_samples);
-        groups[{candidates[c].edge, ch.source_piece, ch.category}].push_back(*ch.result.de00);
+        const int edge = chart.segments[static_cast<size_t>(candidates[c].segment)].edge;
+        groups[{edge, ch.job.pb, ch.category}].push_back(*ch.result.de00);
         all_allowance.push_back(*ch.result.de00);
       }
       for (auto& [key, values] : groups) {
