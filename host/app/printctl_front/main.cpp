@@ -17,12 +17,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-bool runs_here(std::string_view command) {
-  for (std::string_view c : {"submit", "status", "cancel", "token"})
-    if (command == c) return true;
-  return false;
-}
-
 // printctl-full beside this binary (the build tree), else in <prefix>/libexec/printd (installed).
 fs::path full_binary() {
   std::error_code ec;
@@ -37,7 +31,15 @@ fs::path full_binary() {
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc < 2 || !runs_here(argv[1])) {
+  CLI::App app{"printctl: garment print controller command line"};
+  app.require_subcommand(1);
+  app.fallthrough();
+  tp::host::cli::register_daemon_commands(app);
+  tp::host::cli::register_token_commands(app);
+  // A command line whose command the front registered runs here; any other goes to printctl-full.
+  const std::string_view command = argc >= 2 ? argv[1] : "";
+  const auto registered = [&](const CLI::App* sub) { return sub->check_name(std::string(command)); };
+  if (app.get_subcommands(registered).empty()) {
     const fs::path full = full_binary();
     if (full.empty()) {
       std::fprintf(stderr,
@@ -49,11 +51,6 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "printctl: %s: %s\n", full.c_str(), std::strerror(errno));
     return 127;
   }
-  CLI::App app{"printctl: garment print controller command line"};
-  app.require_subcommand(1);
-  app.fallthrough();
-  tp::host::cli::register_daemon_commands(app);
-  tp::host::cli::register_token_commands(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
