@@ -92,7 +92,7 @@ void place_rest_shape(const RestTriangle& t, const std::vector<double>& w, const
 // After the strain passes alone the seams came out 1-3 % longer than cut (shirt_mean's underarm
 // seams 312 mm sewn 318-319 mm), since each pass leaves the last triangles it touched stretched
 // by their neighbours. One sweep along a seam's chain of segments leaves each pulled by the next
-// (hoody_mean's draped seams 1.4 % long); kSeamSweeps forward and back, 0.5 %.
+// (hoody_mean's draped seams 1.4 % long); kSeamSweeps forward and back (figures at the constant).
 void project_seam_edges(const ClothModel& cloth, std::vector<Vec3>& x) {
   auto project = [&](const SeamEdge& e) {
     const Vec3 d = x[e.a] - x[e.b];
