@@ -191,23 +191,25 @@ SelfCollisionPairs find_self_collision_pairs(const ClothModel& cloth, const std:
       const Vec3 a = x[t.v[0]], b = x[t.v[1]], c = x[t.v[2]];
       const Vec3 lo{std::min({a.x, b.x, c.x}), std::min({a.y, b.y, c.y}), std::min({a.z, b.z, c.z})};
       const Vec3 hi{std::max({a.x, b.x, c.x}), std::max({a.y, b.y, c.y}), std::max({a.z, b.z, c.z})};
+      const Vec3 plo = lo - pad, phi = hi + pad;
+      // Most vertices the cells hold are outside the box: left out before the stamp.
       found.clear();
-      for_cells(vh, lo - pad, hi + pad, [&](size_t s) {
+      for_cells(vh, plo, phi, [&](size_t s) {
         vh.visit(s, [&](int v) {
+          const Vec3 q = x[v];
+          if (q.x < plo.x || q.y < plo.y || q.z < plo.z || q.x > phi.x || q.y > phi.y || q.z > phi.z) return;
           if (stamp_v[v] != (pt_gen | f)) stamp_v[v] = pt_gen | f, found.push_back(v);
         });
       });
       Vec3 n{};
       bool have_normal = false;
-      const Vec3 plo = lo - pad, phi = hi + pad;
       for (int v : found) {
+        // The tests are filters, the cheapest first.
         const int gv = group(v);
         if (gv == group(t.v[0]) || gv == group(t.v[1]) || gv == group(t.v[2])) continue;
+        if (rest_neighbours({v}, {t.v[0], t.v[1], t.v[2]})) continue;
         if (seam_near(v, t.v[0]) || seam_near(v, t.v[1]) || seam_near(v, t.v[2])) continue;
         if (opposite_zones(v, t.v[0]) || opposite_zones(v, t.v[1]) || opposite_zones(v, t.v[2])) continue;
-        const Vec3 q0 = x[v];
-        if (q0.x < plo.x || q0.y < plo.y || q0.z < plo.z || q0.x > phi.x || q0.y > phi.y || q0.z > phi.z) continue;
-        if (rest_neighbours({v}, {t.v[0], t.v[1], t.v[2]})) continue;
         const auto w = closest_on_triangle(x[v], a, b, c);
         const Vec3 q = a * w[0] + b * w[1] + c * w[2];
         if (norm(x[v] - q) >= margin_mm) continue;
@@ -220,54 +222,49 @@ SelfCollisionPairs find_self_collision_pairs(const ClothModel& cloth, const std:
 
   // Edge-edge: edges hashed into every cell their padded box covers, then paired per cell.
   SpatialHash eh(cell, cloth.edges.size() * 4, sc.edges);
-  auto edge_box = [&](const std::array<int, 2>& e, Vec3& lo, Vec3& hi) {
-    const Vec3 p = x[e[0]], q = x[e[1]];
-    lo = Vec3{std::min(p.x, q.x), std::min(p.y, q.y), std::min(p.z, q.z)} - pad * 0.5;
-    hi = Vec3{std::max(p.x, q.x), std::max(p.y, q.y), std::max(p.z, q.z)} + pad * 0.5;
-  };
-  for (const auto& e : cloth.edges) {
-    Vec3 lo, hi;
-    edge_box(e, lo, hi);
-    for_cells(eh, lo, hi, [&](size_t s) { eh.count(s); });
+  // Boxes once per search: each edge's is read again for every edge sharing a cell with it.
+  auto& boxes = sc.edge_boxes;
+  boxes.resize(cloth.edges.size());
+  for (size_t k = 0; k < cloth.edges.size(); ++k) {
+    const Vec3 p = x[cloth.edges[k][0]], q = x[cloth.edges[k][1]];
+    boxes[k] = {Vec3{std::min(p.x, q.x), std::min(p.y, q.y), std::min(p.z, q.z)} - pad * 0.5,
+                Vec3{std::max(p.x, q.x), std::max(p.y, q.y), std::max(p.z, q.z)} + pad * 0.5};
+    for_cells(eh, boxes[k][0], boxes[k][1], [&](size_t s) { eh.count(s); });
   }
   eh.finish_counts();
-  for (size_t k = 0; k < cloth.edges.size(); ++k) {
-    Vec3 lo, hi;
-    edge_box(cloth.edges[k], lo, hi);
-    for_cells(eh, lo, hi, [&](size_t s) { eh.fill(s, static_cast<int>(k)); });
-  }
+  for (size_t k = 0; k < cloth.edges.size(); ++k)
+    for_cells(eh, boxes[k][0], boxes[k][1], [&](size_t s) { eh.fill(s, static_cast<int>(k)); });
   auto edge_edge = [&](size_t k0, size_t k1, std::vector<EdgeEdgePair>& ee_out, int worker) {
     std::vector<uint64_t>& stamp_e = sc.stamps[worker];
-    std::vector<int>& found = sc.found[worker];
     for (size_t k = k0; k < k1; ++k) {
       const auto& ea = cloth.edges[k];
-      Vec3 lo, hi;
-      edge_box(ea, lo, hi);
-      found.clear();
-      for_cells(eh, lo, hi, [&](size_t s) {
-        eh.visit_above(s, static_cast<int>(k), [&](int o) {
-          if (stamp_e[o] != (ee_gen | k)) stamp_e[o] = ee_gen | k, found.push_back(o);
-        });
-      });
-      for (int o : found) {
+      const Vec3 lo = boxes[k][0], hi = boxes[k][1];
+      const int a0 = group(ea[0]), a1 = group(ea[1]);
+      // Each edge above k is tested where the cells first meet it (the stamp skips the rest).
+      auto test = [&](int o) {
+        const Vec3 olo = boxes[o][0], ohi = boxes[o][1];
+        if (olo.x > hi.x || olo.y > hi.y || olo.z > hi.z || ohi.x < lo.x || ohi.y < lo.y || ohi.z < lo.z) return;
         const auto& eb = cloth.edges[o];
-        Vec3 olo, ohi;
-        edge_box(eb, olo, ohi);
-        if (olo.x > hi.x || olo.y > hi.y || olo.z > hi.z || ohi.x < lo.x || ohi.y < lo.y || ohi.z < lo.z) continue;
-        const int a0 = group(ea[0]), a1 = group(ea[1]), b0 = group(eb[0]), b1 = group(eb[1]);
-        if (a0 == b0 || a0 == b1 || a1 == b0 || a1 == b1) continue;
+        const int b0 = group(eb[0]), b1 = group(eb[1]);
+        if (a0 == b0 || a0 == b1 || a1 == b0 || a1 == b1) return;
+        if (rest_neighbours({ea[0], ea[1]}, {eb[0], eb[1]})) return;
         if (seam_near(ea[0], eb[0]) || seam_near(ea[0], eb[1]) || seam_near(ea[1], eb[0]) || seam_near(ea[1], eb[1]))
-          continue;
+          return;
         if (opposite_zones(ea[0], eb[0]) || opposite_zones(ea[0], eb[1]) || opposite_zones(ea[1], eb[0]) ||
             opposite_zones(ea[1], eb[1]))
-          continue;
-        if (rest_neighbours({ea[0], ea[1]}, {eb[0], eb[1]})) continue;
+          return;
         const auto st = closest_on_segments(x[ea[0]], x[ea[1]], x[eb[0]], x[eb[1]]);
         const Vec3 pa = x[ea[0]] * (1 - st[0]) + x[ea[1]] * st[0], pb = x[eb[0]] * (1 - st[1]) + x[eb[1]] * st[1];
         const double d = norm(pa - pb);
-        if (d >= margin_mm || d < kSamePoint_mm) continue;
+        if (d >= margin_mm || d < kSamePoint_mm) return;
         ee_out.push_back({static_cast<int>(k), o, (pa - pb) / d});
-      }
+      };
+      const uint64_t query = ee_gen | k;
+      for_cells(eh, lo, hi, [&](size_t s) {
+        eh.visit_above(s, static_cast<int>(k), [&](int o) {
+          if (stamp_e[o] != query) stamp_e[o] = query, test(o);
+        });
+      });
     }
   };
   in_chunks(cloth.edges.size(), pool, sc.edge_edge_parts, out.edge_edge, edge_edge);

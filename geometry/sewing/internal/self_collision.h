@@ -38,6 +38,8 @@ struct SelfCollisionScratch {
     std::vector<int> ids;
   };
   Hash vertices, edges;
+  /// Each edge's box padded by half the margin, for this search's positions.
+  std::vector<std::array<Vec3, 2>> edge_boxes;
   /// Per worker: the query that last visited each primitive (search generation and query index).
   std::vector<std::vector<uint64_t>> stamps;
   std::vector<std::vector<int>> found;
