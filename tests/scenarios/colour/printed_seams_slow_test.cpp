@@ -41,6 +41,12 @@ double worst_seam_with(const json& rep, const std::string& piece) {
 TEST(PrintedSeams, AMisplacedPieceShowsOnThePrintNotOnTheContone) {
   const json planned = run_top("planned", {});
   ASSERT_EQ(planned["state"], "done");
+  // The demo's top-strokes run (DemoReport leaves it to this test): its report matches the schema.
+  const auto valid = validate_report(fs::path(planned["_out"].get<std::string>()) / "report.json");
+  EXPECT_EQ(valid.exit_code, 0) << valid.output;
+  EXPECT_GT(planned["estimate"]["print_time_s"].get<double>(), 0);
+  EXPECT_GT(planned["measured"]["print_time_s"].get<double>(), 0);
+  EXPECT_GT(planned["measured"]["fabric_length_mm"].get<double>(), 0);
   ASSERT_TRUE(planned["seams_printed"]["de00_mean"].is_number()) << planned["seams_printed"].dump();
   // The same pairs, less those whose aperture would reach a seam-line corner or the cut line.
   EXPECT_LE(planned["seams_printed"]["samples"].get<int>(), planned["seams"]["samples"].get<int>());
