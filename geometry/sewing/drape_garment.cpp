@@ -38,6 +38,7 @@ Result<Garment> drape_garment(const Garment& sewn, const BodySdf& body, const Dr
   p.stretch_limit = o.material.stretch_limit;
   p.stretch_stiffness = o.material.stretch_stiffness;
   p.friction = o.material.friction;
+  p.seams_after_contact = true;
   p.settle_speed_mm_s = o.settle_speed_mm_s;
   p.settle_window_s = o.settle_window_s;
   p.settle_windows = o.settle_windows;

@@ -321,6 +321,10 @@ Result<XpbdStats> run_xpbd(ClothModel& cloth, const BodySdf& body, const XpbdPar
       x[i] -= tl <= hold ? tangential : tangential * (hold / tl);
     }
     st.body_contacts = contacts;
+    // The plain seams the last word (draping): contact with friction holds a touching vertex
+    // where the step began, so a seam stretched over the body stayed so (the blouse's 17.03 mm
+    // shoulder seams draped at 17.49 mm, 2.7 %).
+    if (p.seams_after_contact) project_seam_edges(cloth, x);
     double moved2 = 0;
     for (int i = 0; i < n; ++i) {
       const Vec3 d = x[i] - x_searched[i];

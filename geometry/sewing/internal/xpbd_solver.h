@@ -29,6 +29,9 @@ struct XpbdParams {
   double stretch_limit = 0.03;
   double stretch_stiffness = 1.0;
   double friction = 0.4;
+  /// The plain seams' segments projected again after body contact, the last constraint of each
+  /// substep (the drape; sewing and the fine level's settle leave contact the last word).
+  bool seams_after_contact = false;
   /// Draping stops early once settled: the vertices' RMS speed over each window of
   /// `settle_window_s` (their displacement across it, so jitter in place does not count) stays
   /// below `settle_speed_mm_s` for `settle_windows` windows in a row.
