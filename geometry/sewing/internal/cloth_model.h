@@ -47,8 +47,8 @@ struct ClothModel {
   std::vector<int> vertex_piece;              ///< #V piece of the vertex's first chart
   std::vector<Vec2> vertex_rest_mm;           ///< #V the vertex in that chart (pattern mm)
   double mean_edge_mm = 0;
-  /// Segments of plain seams (their sides' pattern lengths agree within kPlainSeamSegment),
-  /// projected to their rest length with the stitches. Draping: the sewn edges joining two
+  /// Segments of plain seams (their sides' pattern lengths, or their seam's, agree within
+  /// kPlainSeamSegment), projected to their rest length with the stitches. Draping: the sewn edges joining two
   /// charts; sewing: each side's segments between consecutive stitched vertices.
   std::vector<SeamEdge> seam_edges;
   /// Sewing only (empty when draping a sewn garment): vertex pairs a stitch draws together,
@@ -91,10 +91,11 @@ void mark_gathered(std::vector<RestTriangle>& triangles, const std::vector<int>&
 /// Builds the model of `g` (its 3D positions and its charts' rest shapes). Triangles a seam
 /// collapsed are left out. Bending across an edge inside a piece rests flat; across a seam it
 /// rests at the sewn angle (the seam allowance holds it). An edge joining two charts (a sewn
-/// seam segment) whose lengths in them agree within kPlainSeamSegment becomes a SeamEdge at their
-/// mean; where they differ more (an eased or gathered seam), the triangles of the longer side's
-/// piece at its ends are gathered (RestTriangle::min_stretch, the two lengths' ratio). Stiffness
-/// from `m`.
+/// seam segment) whose lengths in them agree within kPlainSeamSegment, or that lies on a run of
+/// such edges between the same two pieces whose summed lengths agree so (a plain seam, as XPBD
+/// sewing judges a stitch), becomes a SeamEdge at their mean; otherwise (an eased or gathered
+/// seam) the triangles of the longer side's piece at its ends are gathered
+/// (RestTriangle::min_stretch, the two lengths' ratio). Stiffness from `m`.
 ClothModel build_cloth_model(const Garment& g, const ClothMaterial& m);
 
 /// Signed dihedral angle of stencil (a, b, c, d) at `x` (0 when flat) and, if grad is given,

@@ -1,6 +1,6 @@
 // tests/geometry/sewing/cloth_model_test.cpp: what the cloth model takes from a sewn garment's
-// charts: plain seams' segments as rest-length edges, eased seams' longer sides as gathered
-// triangles.
+// charts: plain seams' segments as rest-length edges (judged by the seam's run, not only the
+// segment), eased seams' longer sides as gathered triangles.
 #include <gtest/gtest.h>
 
 #include "geometry/sewing/internal/cloth_model.h"
@@ -35,6 +35,34 @@ TEST(ClothModel, APlainSeamSegmentKeepsItsPatternLength) {
   EXPECT_EQ(cm.seam_edges[0].b, 1);
   EXPECT_DOUBLE_EQ(cm.seam_edges[0].rest_mm, 100);
   for (const auto& t : cm.triangles) EXPECT_EQ(t.min_stretch, 0);
+}
+
+TEST(ClothModel, ASegmentThatDiffersOnAPlainSeamKeepsItsLengthToo) {
+  // A seam of two segments, 50 + 50 mm on A and 48.5 + 51.5 mm on B: each segment's sides differ
+  // by 3 %, the seam's by none, so both are held (at their means), nothing is gathered.
+  Garment g;
+  g.vertices_mm = {{0, 0, 0}, {50, 0, 0}, {100, 0, 0}, {100, 100, 0}, {0, 100, 0}, {100, -100, 0}, {0, -100, 0}};
+  GarmentPiece a;
+  a.mesh.vertices_mm = {{0, 0}, {50, 0}, {100, 0}, {100, 100}, {0, 100}};
+  a.mesh.triangles = {{0, 1, 4}, {1, 2, 3}, {1, 3, 4}};
+  a.vertex_3d = {0, 1, 2, 3, 4};
+  GarmentPiece b;
+  b.piece = 1;
+  b.mesh.vertices_mm = {{0, 0}, {48.5, 0}, {100, 0}, {100, -100}, {0, -100}};
+  b.mesh.triangles = {{0, 4, 1}, {1, 3, 2}, {1, 4, 3}};
+  b.vertex_3d = {0, 1, 2, 5, 6};
+  g.pieces = {a, b};
+  const internal::ClothModel cm = internal::build_cloth_model(g, *cloth_material_preset("cotton-poplin"));
+  ASSERT_EQ(cm.seam_edges.size(), 2u);
+  EXPECT_DOUBLE_EQ(cm.seam_edges[0].rest_mm, 49.25);
+  EXPECT_DOUBLE_EQ(cm.seam_edges[1].rest_mm, 50.75);
+  for (const auto& t : cm.triangles) EXPECT_EQ(t.min_stretch, 0);
+  // B's side 30 mm longer in all: eased, the segments left to the membrane, B's side gathered.
+  b.mesh.vertices_mm = {{0, 0}, {48.5, 0}, {130, 0}, {130, -100}, {0, -100}};
+  g.pieces = {a, b};
+  const internal::ClothModel eased = internal::build_cloth_model(g, *cloth_material_preset("cotton-poplin"));
+  EXPECT_TRUE(eased.seam_edges.empty());
+  EXPECT_GT(eased.triangles[4].min_stretch, 0);
 }
 
 TEST(ClothModel, AnEasedSeamGathersTheLongerSidesTrianglesAtIt) {
