@@ -351,7 +351,8 @@ void register_bench_garment(CLI::App& bench) {
   cmd->add_option("--sewing-iterations", args->sew.sewing_iterations, "phase A iterations")->check(CLI::Range(4, 100000));
   cmd->add_option("--relax-iterations", args->sew.relax_iterations, "phase B iteration limit")->check(CLI::Range(1, 100000));
   cmd->add_option("--clearance-mm", args->sew.clearance_mm,
-                  "distance the garment keeps from the body (sewing and drape)")
+                  "distance the garment keeps from the body (sewing and drape; in the drape plain seams may draw their "
+                  "vertices into it)")
       ->check(CLI::Range(0.0, 50.0));
   cmd->add_option("--seam-edge-weight", args->sew.seam_edge_weight, "stiffness of sewn seams against their pattern length")
       ->check(CLI::Range(0.0, 1e6));
