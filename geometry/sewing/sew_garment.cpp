@@ -119,7 +119,7 @@ StitchSegments stitch_segments(const Pattern& pattern, const PatternMesh& meshes
     out.lb.push_back(norm(meshes.pieces[pb].vertices_mm[pairs[k + 1][1]] - meshes.pieces[pb].vertices_mm[pairs[k][1]]));
     total_a += out.la.back(), total_b += out.lb.back();
   }
-  out.plain = std::abs(total_a - total_b) <= internal::kPlainSeamSegment * std::max(total_a, total_b);
+  out.plain = internal::plain_seam_lengths(total_a, total_b);
   return out;
 }
 

@@ -84,7 +84,7 @@ std::vector<uint8_t> plain_runs(const std::vector<JoinEdge>& joins, int vertices
   for (int j = 0; j < m; ++j) {
     if (joins[j].piece_a == joins[j].piece_b) continue;
     const int r = find_root(parent, j);
-    plain[j] = std::abs(sum_a[r] - sum_b[r]) <= kPlainSeamSegment * std::max(sum_a[r], sum_b[r]);
+    plain[j] = plain_seam_lengths(sum_a[r], sum_b[r]);
   }
   return plain;
 }
@@ -214,7 +214,7 @@ ClothModel build_cloth_model(const Garment& g, const ClothMaterial& m) {
   std::vector<GatheredEnd> gathered;
   for (size_t j = 0; j < joins.size(); ++j) {
     const JoinEdge& e = joins[j];
-    if (plain_run[j] || std::abs(e.la - e.lb) <= kPlainSeamSegment * std::max(e.la, e.lb)) {
+    if (plain_run[j] || plain_seam_lengths(e.la, e.lb)) {
       cm.seam_edges.push_back({e.lo, e.hi, 0.5 * (e.la + e.lb)});
     } else {
       const int longer = e.la > e.lb ? e.piece_a : e.piece_b;

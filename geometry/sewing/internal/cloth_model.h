@@ -2,7 +2,9 @@
 // rest shapes, bending stencils and edges, built once from a sewn garment.
 #pragma once
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <vector>
 
 #include "geometry/common/vec.h"
@@ -48,8 +50,8 @@ struct ClothModel {
   std::vector<Vec2> vertex_rest_mm;           ///< #V the vertex in that chart (pattern mm)
   double mean_edge_mm = 0;
   /// Segments of plain seams (their sides' pattern lengths, or their seam's, agree within
-  /// kPlainSeamSegment), projected to their rest length with the stitches. Draping: the sewn edges joining two
-  /// charts; sewing: each side's segments between consecutive stitched vertices.
+  /// kPlainSeamSegment), projected to their rest length with the stitches. Draping: the sewn
+  /// edges joining two charts; sewing: each side's segments between consecutive stitched vertices.
   std::vector<SeamEdge> seam_edges;
   /// Sewing only (empty when draping a sewn garment): vertex pairs a stitch draws together,
   /// and per vertex its weld group (the lowest vertex stitched to it, transitively; itself if
@@ -79,6 +81,12 @@ struct ClothModel {
 /// Two sides of a seam segment whose pattern lengths differ by more than this share are eased
 /// or gathered: no one rest length, left to the membrane.
 inline constexpr double kPlainSeamSegment = 0.01;
+
+/// Whether two sides' pattern lengths (of a segment, or summed over a seam) make a plain seam:
+/// they differ by at most kPlainSeamSegment of the longer.
+inline bool plain_seam_lengths(double a_mm, double b_mm) {
+  return std::abs(a_mm - b_mm) <= kPlainSeamSegment * std::max(a_mm, b_mm);
+}
 
 /// A gathered triangle may compress a little beyond its seam's ratio: the gathers are not even
 /// along a seam's segments.

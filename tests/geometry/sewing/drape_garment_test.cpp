@@ -129,7 +129,8 @@ TEST(DrapeGarment, PlainSeamOverTheBodyKeepsItsLength) {
   Garment g;
   const auto place = [&](int i, int j) { return Vec3{i * kStep, 410, kRows * kStep / 2 - j * kStep}; };
   test_fixture::add_grid_piece(g, kCols, kRows, kStep, [&](int i, int j) { return place(i - kCols, j); });
-  // The right piece: its column 0 is the left piece's last column.
+  // The right piece: its column 0 is the left piece's last column (the 3D vertices it was given
+  // for that column stay in the garment, in no triangle).
   const int seam_in_left = kCols;
   test_fixture::add_grid_piece(g, kCols, kRows, kStep, [&](int i, int j) { return place(i, j); });
   GarmentPiece& right = g.pieces[1];
