@@ -18,6 +18,7 @@ TIMEOUT_S = 400
 def main():
     h.need_browser()
     from selenium.webdriver.common.by import By
+    from selenium.common.exceptions import StaleElementReferenceException
     from selenium.webdriver.support.ui import WebDriverWait
 
     root = tempfile.mkdtemp(prefix="tp-console-ops-")
@@ -63,6 +64,8 @@ def main():
         seen, states, faults_seen, start = set(), set(), set(), time.time()
         shot_taken = False
         final = None
+        focused_at = None  # when the running job's button was given the keyboard focus
+        focus_kept = None
         while time.time() - start < TIMEOUT_S:
             # One script call reads the row at once: rows are replaced as events arrive.
             row = driver.execute_script("""
@@ -73,6 +76,13 @@ def main():
               return [r.dataset.state, bar ? Number(bar.getAttribute("aria-valuenow")) : null, faults];""", job_id)
             if row:
                 state, value, now_faults = row
+                # The running row is rebuilt every second: its focused button must keep the focus.
+                if state == "running" and focused_at is None:
+                    focused_at = time.time() if driver.execute_script(
+                        "const b = document.querySelector(`button[data-open=\"${arguments[0]}\"]`);"
+                        "if (b) b.focus(); return !!b;", job_id) else None
+                elif focused_at is not None and focus_kept is None and time.time() - focused_at > 2.5:
+                    focus_kept = driver.execute_script("return document.activeElement.dataset.open", job_id) == job_id
                 faults_seen.update(now_faults)
                 states.add(state)
                 if value is not None:
@@ -98,11 +108,20 @@ def main():
             "return [...document.querySelectorAll(arguments[0])].filter((s) => s.style.width === '100%').length",
             f'#history tr[data-job-id="{job_id}"] .seg .fill')
         check(filled == 8, f"all 8 stage segments full in the history ({filled})")
+        check(focus_kept is True, f"the running job's focused button kept the focus as its row was rebuilt ({focus_kept})")
 
-        # The detail opens (by keyboard: focus the job's button and press Enter), the garment renders.
+        # The detail opens (by keyboard: focus the job's button and press Enter on what has the focus),
+        # the garment renders. The history may be rebuilt between the two: the focus stays, the
+        # element reference may not, so Enter goes to the active element, fetched afresh.
         button = driver.find_element(By.CSS_SELECTOR, f'#history tr[data-job-id="{job_id}"] button[data-open]')
         driver.execute_script("arguments[0].focus()", button)
-        button.send_keys("\n")
+        for attempt in range(3):
+            try:
+                driver.switch_to.active_element.send_keys("\n")
+                break
+            except StaleElementReferenceException:
+                if attempt == 2:
+                    raise
         WebDriverWait(driver, 30).until(lambda d: d.find_element(By.ID, "detail").get_attribute("data-job-id") == job_id)
         WebDriverWait(driver, 120).until(
             lambda d: d.find_elements(By.ID, "detail-garment") and

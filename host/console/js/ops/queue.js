@@ -114,7 +114,7 @@ export class Queue {
         if (!row || !j) continue;
         const running = !ENDED.has(j.state);
         if (running !== (row.parentNode === this.queueBody)) { this.render(); break; }
-        row.replaceWith(running ? this.queueRow(j) : this.historyRow(j));
+        this.keepingFocus(() => row.replaceWith(running ? this.queueRow(j) : this.historyRow(j)));
       }
       this.dirty.clear();
     });
@@ -125,14 +125,28 @@ export class Queue {
     // The queue runs oldest first, the history shows the newest first.
     const active = all.filter((j) => !ENDED.has(j.state)).sort((a, b) => a.id - b.id);
     const ended = all.filter((j) => ENDED.has(j.state));
-    this.queueBody.replaceChildren(...(active.length ? active.map((j) => this.queueRow(j))
-      : [el("tr", {}, el("td", { colspan: 5, class: "muted" }, "nothing queued"))]));
-    this.historyBody.replaceChildren(...ended.map((j) => this.historyRow(j)));
+    this.keepingFocus(() => {
+      this.queueBody.replaceChildren(...(active.length ? active.map((j) => this.queueRow(j))
+        : [el("tr", {}, el("td", { colspan: 5, class: "muted" }, "nothing queued"))]));
+      this.historyBody.replaceChildren(...ended.map((j) => this.historyRow(j)));
+    });
     document.getElementById("queue-count").textContent = `(${active.length})`;
     document.getElementById("history-count").textContent = `(${ended.length}${this.total > all.length ? " of " + (this.total - active.length) : ""})`;
     this.more.hidden = !(this.total > all.length);
     // The first full list is a mark on the page's timeline (docs/console.md: first paint figures).
     if (!this.marked) { this.marked = true; performance.mark("tp-jobs-rendered"); }
+  }
+
+  /** Runs `rebuild`, which replaces rows; a job's button that had the keyboard focus keeps it on
+   *  its new row (rows are rebuilt every second while a job runs and on every job event). */
+  keepingFocus(rebuild) {
+    const had = document.activeElement;
+    const id = had && had.dataset ? had.dataset.open : undefined;
+    rebuild();
+    if (id === undefined || had.isConnected) return;
+    const again = this.queueBody.querySelector(`button[data-open="${id}"]`) ||
+                  this.historyBody.querySelector(`button[data-open="${id}"]`);
+    if (again) again.focus({ preventScroll: true });
   }
 
   nameCell(j) {
