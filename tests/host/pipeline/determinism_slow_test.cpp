@@ -1,6 +1,7 @@
 // tests/host/pipeline/determinism_slow_test.cpp: the same job run twice, the second time while
-// other processes load every core, gives the same files byte for byte: garment, pieces, marker,
-// cut files and the swath plan (the digest of every swath the printer would get).
+// other processes load every core, gives the same files byte for byte: garment, draped garment
+// and its print previews, pieces, marker, cut files and the swath plan (the digest of every swath
+// the printer would get).
 #include <gtest/gtest.h>
 
 #include <signal.h>
@@ -48,8 +49,18 @@ class CpuLoad {
 
 // Every output file that must repeat, relative to the run's folder (out/ or plan/).
 std::vector<std::string> compared_files(const fs::path& run) {
-  std::vector<std::string> files = {"out/garment.obj", "out/marker.png", "out/cut.dxf", "out/cut.svg",
-                                    "plan/garment.plan", "plan/pieces.json", "plan/marker.json", "plan/swaths.json"};
+  std::vector<std::string> files = {"out/garment.obj",
+                                    "out/garment-draped.obj",
+                                    "out/garment-print-front.png",
+                                    "out/garment-print-side.png",
+                                    "out/garment-print-back.png",
+                                    "out/marker.png",
+                                    "out/cut.dxf",
+                                    "out/cut.svg",
+                                    "plan/garment.plan",
+                                    "plan/pieces.json",
+                                    "plan/marker.json",
+                                    "plan/swaths.json"};
   for (const auto& e : fs::directory_iterator(run / "out" / "pieces"))
     files.push_back("out/pieces/" + e.path().filename().string());
   std::sort(files.begin(), files.end());
