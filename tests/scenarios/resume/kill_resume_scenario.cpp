@@ -53,8 +53,11 @@ fs::path make_job(const fs::path& dir) {
 class PrintRoom {
  public:
   /// `synthetic`: the host is `printctl link-job` with a fixed synthetic job (deterministic, no
-  /// planning), restarted until it succeeds; otherwise printd with the job store.
-  explicit PrintRoom(fs::path root, bool synthetic = false) : root_(std::move(root)), synthetic_(synthetic) {
+  /// planning), restarted until it succeeds; otherwise printd with the job store. `speed`:
+  /// printsim's modelled seconds per wall second, 2 where the test kills while printing; 0 (as
+  /// fast as data arrives) for a clean run, whose fabric does not depend on it.
+  explicit PrintRoom(fs::path root, bool synthetic = false, double speed = 2)
+      : root_(std::move(root)), synthetic_(synthetic), speed_(speed) {
     fs::create_directories(root_ / "hot");
     if (synthetic)
       std::ofstream(root_ / "loop.sh") << "#!/bin/sh\n"
@@ -100,14 +103,15 @@ class PrintRoom {
       const std::string sim = (bin_dir() / "printsim").string(), out = (root_ / "sim").string(),
                         state = (root_ / "printer-memory.json").string(), loop = (root_ / "loop.sh").string(),
                         root = root_.string(), printd = (bin_dir() / "printd").string(),
-                        model = (root_ / "printer.tpm").string(), printctl = (bin_dir() / "printctl").string();
+                        model = (root_ / "printer.tpm").string(), printctl = (bin_dir() / "printctl").string(),
+                        speed = std::to_string(speed_);
       if (synthetic_)
         ::execl(sim.c_str(), sim.c_str(), "run", "--speed", "1", "--state", state.c_str(), "--out", out.c_str(), "--",
                 "/bin/sh", loop.c_str(), root.c_str(), printctl.c_str(), static_cast<char*>(nullptr));
       else
-        ::execl(sim.c_str(), sim.c_str(), "run", "--job-dirs", "--printer", model.c_str(), "--speed", "2", "--state",
-                state.c_str(), "--out", out.c_str(), "--", "/bin/sh", loop.c_str(), root.c_str(), printd.c_str(),
-                static_cast<char*>(nullptr));
+        ::execl(sim.c_str(), sim.c_str(), "run", "--job-dirs", "--printer", model.c_str(), "--speed", speed.c_str(),
+                "--state", state.c_str(), "--out", out.c_str(), "--", "/bin/sh", loop.c_str(), root.c_str(),
+                printd.c_str(), static_cast<char*>(nullptr));
       ::_exit(127);
     }
   }
@@ -212,6 +216,7 @@ class PrintRoom {
  private:
   fs::path root_;
   bool synthetic_ = false;
+  double speed_ = 2;
   pid_t sim_ = -1;
 };
 
@@ -262,7 +267,7 @@ std::string row(const std::string& name, const Outcome& o) {
 // Prints the job once, killing printd (or printsim) when the printer has printed `kill_at`
 // swaths; -1 is the clean run.
 Outcome print_with_kill(const std::string& name, int kill_at, bool kill_printsim) {
-  PrintRoom room(scratch_dir("kill-resume-" + name));
+  PrintRoom room(scratch_dir("kill-resume-" + name), false, kill_at >= 0 ? 2 : 0);
   const fs::path job = make_job(room.root() / "jobs");
   room.start();
   EXPECT_TRUE(room.submit(job)) << name << ": printd did not take the job";
