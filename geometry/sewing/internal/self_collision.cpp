@@ -57,11 +57,12 @@ class SpatialHash {
   void visit(size_t s, Fn&& fn) const {
     for (size_t k = b_.start[s]; k < b_.start[s + 1]; ++k) fn(b_.ids[k]);
   }
-  // The entries above `id` only, in their order (a slot's entries ascend: fill() runs in id order).
+  // Where slot s's next entry goes, while filling (a slot's entries ascend: fill() runs in id order).
+  size_t fill_end(size_t s) const { return b_.fill[s]; }
+  // Slot s's entries from table position `from` on, in their order.
   template <class Fn>
-  void visit_above(size_t s, int id, Fn&& fn) const {
-    const auto end = b_.ids.begin() + static_cast<long>(b_.start[s + 1]);
-    for (auto it = std::upper_bound(b_.ids.begin() + static_cast<long>(b_.start[s]), end, id); it != end; ++it) fn(*it);
+  void visit_from(size_t s, size_t from, Fn&& fn) const {
+    for (size_t k = from; k < b_.start[s + 1]; ++k) fn(b_.ids[k]);
   }
 
  private:
@@ -232,8 +233,22 @@ SelfCollisionPairs find_self_collision_pairs(const ClothModel& cloth, const std:
     for_cells(eh, boxes[k][0], boxes[k][1], [&](size_t s) { eh.count(s); });
   }
   eh.finish_counts();
-  for (size_t k = 0; k < cloth.edges.size(); ++k)
-    for_cells(eh, boxes[k][0], boxes[k][1], [&](size_t s) { eh.fill(s, static_cast<int>(k)); });
+  // Where the edges above each edge begin in its cells' slots, noted as it goes in (the fill
+  // runs in edge order): its query walks them without hashing its cells again or searching.
+  sc.edge_cells_start.assign(cloth.edges.size() + 1, 0);
+  sc.edge_cells_slot.clear();
+  sc.edge_cells_above.clear();
+  for (size_t k = 0; k < cloth.edges.size(); ++k) {
+    sc.edge_cells_start[k] = sc.edge_cells_slot.size();
+    for_cells(eh, boxes[k][0], boxes[k][1], [&](size_t s) {
+      eh.fill(s, static_cast<int>(k));
+      sc.edge_cells_slot.push_back(s);
+    });
+    // Two of k's cells in one slot hold k twice, side by side: the edges above start past both.
+    for (size_t c = sc.edge_cells_start[k]; c < sc.edge_cells_slot.size(); ++c)
+      sc.edge_cells_above.push_back(eh.fill_end(sc.edge_cells_slot[c]));
+  }
+  sc.edge_cells_start[cloth.edges.size()] = sc.edge_cells_slot.size();
   auto edge_edge = [&](size_t k0, size_t k1, std::vector<EdgeEdgePair>& ee_out, int worker) {
     std::vector<uint64_t>& stamp_e = sc.stamps[worker];
     for (size_t k = k0; k < k1; ++k) {
@@ -260,11 +275,10 @@ SelfCollisionPairs find_self_collision_pairs(const ClothModel& cloth, const std:
         ee_out.push_back({static_cast<int>(k), o, (pa - pb) / d});
       };
       const uint64_t query = ee_gen | k;
-      for_cells(eh, lo, hi, [&](size_t s) {
-        eh.visit_above(s, static_cast<int>(k), [&](int o) {
+      for (size_t c = sc.edge_cells_start[k]; c < sc.edge_cells_start[k + 1]; ++c)
+        eh.visit_from(sc.edge_cells_slot[c], sc.edge_cells_above[c], [&](int o) {
           if (stamp_e[o] != query) stamp_e[o] = query, test(o);
         });
-      });
     }
   };
   in_chunks(cloth.edges.size(), pool, sc.edge_edge_parts, out.edge_edge, edge_edge);

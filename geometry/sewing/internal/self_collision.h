@@ -40,6 +40,9 @@ struct SelfCollisionScratch {
   Hash vertices, edges;
   /// Each edge's box padded by half the margin, for this search's positions.
   std::vector<std::array<Vec3, 2>> edge_boxes;
+  /// Each edge's entries in the edges' hash, from `edge_cells_start[k]`, one per cell of its box
+  /// in for_cells order: the slot, and where in it the edges above k begin.
+  std::vector<size_t> edge_cells_start, edge_cells_slot, edge_cells_above;
   /// Per worker: the query that last visited each primitive (search generation and query index).
   std::vector<std::vector<uint64_t>> stamps;
   std::vector<std::vector<int>> found;
