@@ -30,7 +30,8 @@ struct XpbdParams {
   double stretch_stiffness = 1.0;
   double friction = 0.4;
   /// The plain seams' segments projected again after body contact, the last constraint of each
-  /// substep (the drape; sewing and the fine level's settle leave contact the last word).
+  /// substep, and after the last substep the seam finish (run_xpbd) brings them to their length
+  /// (the drape; sewing and the fine level's settle leave contact the last word).
   bool seams_after_contact = false;
   /// Draping stops early once settled: the vertices' RMS speed over each window of
   /// `settle_window_s` (their displacement across it, so jitter in place does not count) stays
