@@ -64,6 +64,12 @@ double wrap_angle(double a) {
   return a;
 }
 
+// Whether body contact queries the vertex at `x`: only where the grid's interpolated distance (a
+// cheap estimate, BodySdf::approx_distance_mm) is within the thickness plus 0.4 of a grid cell.
+bool may_touch(const BodySdf& body, const Vec3& x, double thickness_mm) {
+  return body.approx_distance_mm(x) <= thickness_mm + 0.4 * body.spacing_mm();
+}
+
 // One XPBD bending projection (lambda starts at 0 every substep: one iteration per substep).
 void project_bend(const BendStencil& s, const std::vector<double>& w, double dt2, std::vector<Vec3>& x) {
   std::array<Vec3, 4> g;
@@ -296,7 +302,7 @@ Result<XpbdStats> run_xpbd(ClothModel& cloth, const BodySdf& body, const XpbdPar
     parallel_ranges(n, pool, [&](int b, int e) {
       for (int i = b; i < e; ++i) {
         touching[i] = 0;
-        if (body.approx_distance_mm(x[i]) > p.body_thickness_mm + 0.4 * body.spacing_mm()) continue;
+        if (!may_touch(body, x[i], p.body_thickness_mm)) continue;
         const BodySdf::Hit h = body.query(x[i]);
         if (!h.near || h.distance_mm >= p.body_thickness_mm) {
           // Deeper than the band: the constraints (a stitch partner, neighbours outside) may
@@ -399,7 +405,7 @@ Result<XpbdStats> run_xpbd(ClothModel& cloth, const BodySdf& body, const XpbdPar
       resolve_self_collisions(cloth, pairs, p.self_thickness_mm, x);
       parallel_ranges(n, pool, [&](int b, int e) {
         for (int i = b; i < e; ++i) {
-          if (body.approx_distance_mm(x[i]) > p.body_thickness_mm + 0.4 * body.spacing_mm()) continue;
+          if (!may_touch(body, x[i], p.body_thickness_mm)) continue;
           const BodySdf::Hit h = body.query(x[i]);
           if (h.near && h.distance_mm < p.body_thickness_mm) x[i] = h.closest_mm + h.normal * p.body_thickness_mm;
         }
